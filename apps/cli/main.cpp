@@ -1,0 +1,116 @@
+// membra: the command-line tool. Thin: it parses arguments, calls the library and reports.
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "membra/io/input_error.hpp"
+#include "membra/io/obj.hpp"
+#include "membra/io/output_set.hpp"
+#include "membra/io/report.hpp"
+#include "membra/io/run.hpp"
+#include "membra/io/scene.hpp"
+#include "membra/version.hpp"
+#include "progress_bar.hpp"
+
+namespace {
+
+// Exit codes, documented in docs/cli.md.
+enum Exit : int { kOk = 0, kInternal = 1, kBadInput = 2, kDiverged = 3, kOutput = 4 };
+
+int cmd_validate(const std::string& scene_file, const std::vector<std::string>& sets, bool quiet) {
+  const membra::Scene scene = membra::load_scene(scene_file, sets);
+  try {
+    const membra::PreparedScene p = membra::prepare_scene(scene);
+    if (!quiet)
+      std::cout << scene_file << ": valid (" << p.sheet.model.num_particles() << " particles, "
+                << p.sheet.model.springs.size() << " springs, " << p.pinned << " pinned)\n";
+  } catch (const membra::InputError& e) {
+    throw membra::InputError(scene_file + ": " + e.where(), e.detail());
+  }
+  return kOk;
+}
+
+int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets, std::string out_dir,
+            bool quiet) {
+  const membra::Scene scene = membra::load_scene(scene_file, sets);
+  try {
+    (void)membra::prepare_scene(scene);  // fail on bad input before touching the disk
+  } catch (const membra::InputError& e) {
+    throw membra::InputError(scene_file + ": " + e.where(), e.detail());
+  }
+  if (out_dir.empty()) out_dir = "out/" + scene.name;
+  membra::OutputSet out(out_dir);
+
+  membra::cli::ProgressBar bar(!quiet);
+  const membra::RunResult r =
+      membra::run_scene(scene, [&](const membra::Progress& p) { bar.update(p); });
+  bar.finish();
+  const nlohmann::json report = membra::make_report(scene, r);
+  out.add("report.json", [&](std::ostream& os) { os << report.dump(2) << '\n'; });
+  if (r.solve.diverged) {
+    // A diverged state is no form: only the report is written, and it says so.
+    out.commit();
+    std::cerr << "membra: " << scene_file << ": " << r.solve.message << "\n"
+              << "membra: wrote only " << (out.dir() / "report.json").string() << "\n";
+    return kDiverged;
+  }
+  out.add("final.obj", [&](std::ostream& os) {
+    membra::write_obj(os, r.prepared.state.x, r.prepared.sheet.triangles);
+  });
+  out.commit();
+  if (!quiet) {
+    std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"
+              << "results in " << out.dir().string() << "/ (final.obj, report.json)\n";
+  }
+  return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"membra: form-finding for pre-stretched, resin-impregnated membranes"};
+  app.set_version_flag("--version", std::string("membra ") + membra::kVersion);
+  app.require_subcommand(1);
+
+  std::string scene_file, out_dir;
+  std::vector<std::string> sets;
+  bool quiet = false;
+  const char* set_help = "Override a scene value before validation, e.g. --set simulation.steps=500";
+  auto* run = app.add_subcommand("run", "Run a scene and write its results");
+  run->add_option("scene", scene_file, "Scene file (JSON)")->required();
+  run->add_option("--out,-o", out_dir, "Output directory (default: out/<scene name>)");
+  run->add_option("--set", sets, set_help)->type_name("PATH=VALUE");
+  run->add_flag("--quiet,-q", quiet, "No progress bar or summary");
+
+  auto* validate = app.add_subcommand("validate", "Check a scene without running it");
+  validate->add_option("scene", scene_file, "Scene file (JSON)")->required();
+  validate->add_option("--set", sets, set_help)->type_name("PATH=VALUE");
+  validate->add_flag("--quiet,-q", quiet, "Print nothing when the scene is valid");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kBadInput;
+  }
+  try {
+    if (*run) return cmd_run(scene_file, sets, out_dir, quiet);
+    if (*validate) return cmd_validate(scene_file, sets, quiet);
+  } catch (const membra::InputError& e) {
+    std::cerr << "membra: error: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const membra::OutputError& e) {
+    std::cerr << "membra: error: " << e.what() << "\n";
+    return kOutput;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "membra: error: " << scene_file << ": " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "membra: internal error: " << e.what() << "\n";
+    return kInternal;
+  }
+  return kInternal;
+}

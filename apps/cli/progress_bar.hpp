@@ -1,0 +1,22 @@
+#pragma once
+// A progress bar on stderr that appears only once a run has taken more than a second.
+#include "membra/solve/solve_report.hpp"
+
+namespace membra::cli {
+
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool enabled);
+  ~ProgressBar();
+  void update(const Progress& p);
+  // Ends the bar's line (if one was drawn).
+  void finish();
+
+ private:
+  bool enabled_;
+  bool tty_;
+  bool drawn_ = false;
+  double last_print_ = -1e9;
+};
+
+}  // namespace membra::cli

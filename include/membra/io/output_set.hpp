@@ -1,0 +1,42 @@
+#pragma once
+// Writes a run's output files all-or-nothing: each file goes to a temporary name in the output
+// directory, and only commit() renames them into place. If anything fails before commit(), the
+// destructor removes the temporaries, so a failed run leaves no partial or stale-looking files.
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace membra {
+
+// Failure to create, write or move an output file.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class OutputSet {
+ public:
+  // Creates `dir` if needed and checks it is writable. Throws OutputError naming the
+  // directory when it cannot be created or written.
+  explicit OutputSet(std::filesystem::path dir);
+  ~OutputSet();
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+
+  // Stages file `name` by calling write(stream). Throws OutputError naming the file if
+  // writing fails (disk full, I/O error).
+  void add(const std::string& name, const std::function<void(std::ostream&)>& write);
+  // Renames every staged file to its final name.
+  void commit();
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_;
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // tmp, final
+  bool committed_ = false;
+};
+
+}  // namespace membra

@@ -1,0 +1,14 @@
+#pragma once
+// report.json: the numbers of a run, each with its unit (DESIGN.md section 8).
+#include <nlohmann/json.hpp>
+
+#include "membra/io/run.hpp"
+
+namespace membra {
+
+// The report of a finished (or diverged) run. Keys: converged, residual, residual_relative,
+// iterations, force_passes, wall_seconds, particles, springs, pinned, energy, energy_parts,
+// shape.height, ... and `units`, which maps each key to its unit.
+nlohmann::json make_report(const Scene& scene, const RunResult& result);
+
+}  // namespace membra

@@ -1,0 +1,56 @@
+#pragma once
+// Scene files: the JSON that describes one reproducible membra run. Read and fully validated
+// here; values are converted from the scene's units (mm, MPa, g/cm^3, s, N) to SI.
+// The format is documented in docs/scene.md and docs/scene.schema.json.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "membra/geometry/grid_sheet.hpp"
+#include "membra/model/pins.hpp"
+#include "membra/model/sheet.hpp"
+
+namespace membra {
+
+// How to simulate: the paper's K, G, T, D and the run length.
+struct SimulationSpec {
+  std::string solver = "rk4";   // integrator name
+  double gravity = 9.81;        // G, m/s^2, acting along -z
+  double dt = 1e-4;             // T, s
+  double damping = 0.0;         // D, 1/s (force -D m v on every particle)
+  long steps = 10000;
+  double tolerance = 1e-6;      // relative to k_stretch x grid spacing
+  bool stop_when_converged = true;
+};
+
+struct Scene {
+  std::filesystem::path file;   // where it was read from (empty for in-memory scenes)
+  std::string name;
+  std::string description;
+  GridSpec grid;                // SI
+  SheetOptions sheet;           // material in SI, K override in N/m
+  std::vector<PinSpec> pins;
+  SimulationSpec simulation;
+};
+
+// Parses and validates a scene. Throws InputError naming the JSON pointer of the first problem.
+Scene parse_scene(const nlohmann::json& j);
+// Reads a scene file, applying `overrides` (see apply_override) before validation. Throws
+// InputError whose message starts with the file name: unreadable file, malformed JSON (with line
+// and column), a bad override, or any invalid field.
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+
+// Applies one "dotted.path=value" assignment to a scene's JSON, e.g. "simulation.steps=500" or
+// "sheet.resolution=[21,21]". The value is read as JSON, or taken as a string if it is not JSON.
+// Array elements are addressed by index ("sheet.size.0=150"). Throws InputError for a malformed
+// assignment.
+void apply_override(nlohmann::json& scene, const std::string& assignment);
+
+// Keys the parser accepts in each object, by JSON pointer pattern ("/sheet", "/pins/*"), so that
+// docs/scene.schema.json can be checked against the code.
+std::map<std::string, std::vector<std::string>> scene_known_keys();
+
+}  // namespace membra

@@ -1,0 +1,36 @@
+#pragma once
+// A membrane sheet: the grid, its triangles and the particle-spring model built on it.
+#include <optional>
+#include <vector>
+
+#include "membra/geometry/grid_sheet.hpp"
+#include "membra/geometry/triangulation.hpp"
+#include "membra/model/material.hpp"
+#include "membra/model/model.hpp"
+
+namespace membra {
+
+// How to build the lattice.
+struct SheetOptions {
+  Material material = latex();
+  bool stretch = true;   // grid-edge springs
+  bool shear = true;     // both diagonals of each cell
+  bool flex = false;     // skip-one springs (the paper's "bend"; no linear bending stiffness)
+  double flex_ratio = 0.1;                 // k_flex / k_stretch when flex is on
+  std::optional<double> stretch_stiffness; // overrides k_stretch (N/m): the paper's K
+  double spring_damping = 0.0;             // c of every spring, N*s/m
+};
+
+struct Sheet {
+  GridSheet grid;
+  Model model;
+  std::vector<Triangle> triangles;
+  LatticeStiffness stiffness;  // N/m per family, as built
+};
+
+// Builds the sheet: lumped masses (area x thickness x density, a quarter of each active cell to
+// each of its corners), the chosen spring families at rest in the flat grid, no pins, no
+// gravity. Nodes the mask removes, and nodes left in no active cell, are dropped.
+Sheet build_sheet(const GridSpec& spec, const SheetOptions& options, const NodeMask& keep = {});
+
+}  // namespace membra

@@ -1,0 +1,27 @@
+#pragma once
+// One spring's energy and force: the single kernel that every force pass, energy sum and
+// measure uses, so energies and forces cannot disagree.
+#include "membra/geometry/vec.hpp"
+
+namespace membra {
+
+// Elastic energy 1/2 k (l - l0)^2 of a spring between xa and xb (J for SI inputs).
+inline double spring_energy(const Vec3& xa, const Vec3& xb, double l0, double k) {
+  const double stretch = (xb - xa).norm() - l0;
+  return 0.5 * k * stretch * stretch;
+}
+
+// Force on particle a (the force on b is its negative): the elastic part k (l - l0) along the
+// unit vector from a to b, plus damping c times the relative velocity along the spring.
+// A spring of zero length has no direction and exerts no force.
+inline Vec3 spring_force_on_a(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb,
+                              double l0, double k, double c) {
+  const Vec3 d = xb - xa;
+  const double l = d.norm();
+  if (l <= 0.0) return Vec3::Zero();
+  const Vec3 n = d / l;
+  const double closing_speed = (vb - va).dot(n);
+  return (k * (l - l0) + c * closing_speed) * n;
+}
+
+}  // namespace membra

@@ -1,0 +1,57 @@
+#include "membra/io/output_set.hpp"
+
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace membra {
+namespace fs = std::filesystem;
+
+namespace {
+std::string tmp_suffix() { return ".tmp-" + std::to_string(::getpid()); }
+}  // namespace
+
+OutputSet::OutputSet(fs::path dir) : dir_(std::move(dir)) {
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec || !fs::is_directory(dir_))
+    throw OutputError("output directory " + dir_.string() + ": cannot create it (" +
+                             (ec ? ec.message() : "not a directory") + ")");
+  // Probe with a real file: permission bits alone do not tell (root, read-only mounts).
+  const fs::path probe = dir_ / (".membra-write-test" + tmp_suffix());
+  {
+    std::ofstream out(probe);
+    if (!out) throw OutputError("output directory " + dir_.string() + ": not writable");
+  }
+  fs::remove(probe, ec);
+}
+
+OutputSet::~OutputSet() {
+  if (committed_) return;
+  std::error_code ec;
+  for (const auto& [tmp, final_path] : staged_) fs::remove(tmp, ec);
+}
+
+void OutputSet::add(const std::string& name, const std::function<void(std::ostream&)>& write) {
+  const fs::path final_path = dir_ / name;
+  const fs::path tmp = dir_ / (name + tmp_suffix());
+  staged_.emplace_back(tmp, final_path);
+  std::ofstream out(tmp, std::ios::binary);
+  if (!out) throw OutputError(tmp.string() + ": cannot open for writing");
+  write(out);
+  out.flush();
+  if (!out) throw OutputError(final_path.string() + ": write failed (disk full?)");
+}
+
+void OutputSet::commit() {
+  for (const auto& [tmp, final_path] : staged_) {
+    std::error_code ec;
+    fs::rename(tmp, final_path, ec);
+    if (ec) throw OutputError(final_path.string() + ": cannot move into place: " + ec.message());
+  }
+  committed_ = true;
+}
+
+}  // namespace membra

@@ -1,0 +1,63 @@
+#include "membra/io/report.hpp"
+
+#include "membra/model/units.hpp"
+#include "membra/version.hpp"
+
+namespace membra {
+
+namespace {
+nlohmann::json mm3(const Vec3& v) {
+  return {v.x() / units::mm, v.y() / units::mm, v.z() / units::mm};
+}
+}  // namespace
+
+nlohmann::json make_report(const Scene& scene, const RunResult& r) {
+  const SolveReport& s = r.solve;
+  const Model& m = r.prepared.sheet.model;
+  nlohmann::json j;
+  j["membra_version"] = kVersion;
+  j["scene"] = scene.name;
+  j["solver"] = scene.simulation.solver;
+  j["status"] = s.diverged ? "diverged" : (s.converged ? "converged" : "not_converged");
+  j["message"] = s.message;
+  j["converged"] = s.converged;
+  j["residual"] = s.residual;
+  j["residual_relative"] = s.residual_relative;
+  j["tolerance"] = scene.simulation.tolerance;
+  j["iterations"] = s.iterations;
+  j["force_passes"] = s.force_passes;
+  j["wall_seconds"] = s.wall_seconds;
+  j["simulated_seconds"] = r.prepared.state.time;
+  j["particles"] = m.num_particles();
+  j["springs"] = m.springs.size();
+  j["triangles"] = r.prepared.sheet.triangles.size();
+  j["pinned"] = r.prepared.pinned;
+  j["stiffness"] = {{"stretch", r.prepared.sheet.stiffness.stretch / units::N_per_mm},
+                    {"shear", r.prepared.sheet.stiffness.shear / units::N_per_mm},
+                    {"flex", r.prepared.sheet.stiffness.flex / units::N_per_mm}};
+  if (!s.diverged) {
+    j["energy"] = r.elastic_energy + r.gravity_energy;
+    j["energy_parts"] = {{"elastic", r.elastic_energy},
+                         {"gravity", r.gravity_energy},
+                         {"kinetic", r.kinetic_energy}};
+    j["shape"] = {{"height", r.shape.height / units::mm},
+                  {"z_range", r.shape.z_range / units::mm},
+                  {"bbox_min", mm3(r.shape.bbox_min)},
+                  {"bbox_max", mm3(r.shape.bbox_max)}};
+  }
+  j["units"] = {{"residual", "N"},
+                {"residual_relative", "1 (residual / (k_stretch x grid spacing))"},
+                {"wall_seconds", "s"},
+                {"simulated_seconds", "s"},
+                {"stiffness", "N/mm"},
+                {"energy", "J (elastic + gravitational potential)"},
+                {"energy_parts", "J"},
+                {"shape.height", "mm (extent normal to the best-fit plane)"},
+                {"shape.z_range", "mm"},
+                {"shape.bbox_min", "mm"},
+                {"shape.bbox_max", "mm"},
+                {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};
+  return j;
+}
+
+}  // namespace membra

@@ -1,0 +1,245 @@
+#include "membra/io/scene.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "membra/io/json_reader.hpp"
+#include "membra/model/units.hpp"
+#include "membra/solve/integrator.hpp"
+
+namespace membra {
+namespace {
+
+using nlohmann::json;
+
+// Known keys, one list per object; scene_known_keys() exposes them for the schema test.
+const std::vector<std::string_view> kTopKeys = {"$schema", "name", "description", "sheet",
+                                                "materials", "pins", "simulation"};
+const std::vector<std::string_view> kSheetKeys = {"size", "resolution", "material", "springs"};
+const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
+const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density"};
+const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
+const std::vector<std::string_view> kSimulationKeys = {
+    "solver", "K", "G", "T", "D", "spring_damping", "steps", "tolerance", "stop_when_converged"};
+
+// Largest grid we accept; the robustness issue adds a memory-based limit.
+constexpr long kMaxNodesPerSide = 4096;
+
+std::map<std::string, Material> parse_materials(const json& j) {
+  std::map<std::string, Material> out;
+  for (const char* name : {"latex", "epoxy"}) out[name] = *material_preset(name);
+  if (!j.contains("materials")) return out;
+  const auto& mats = j.at("materials");
+  if (!mats.is_object())
+    throw InputError("/materials", "expected an object of named materials, got " +
+                                       json_type_name(mats));
+  for (const auto& [name, value] : mats.items()) {
+    const std::string ptr = "/materials/" + name;
+    JsonObject m(value, ptr, kMaterialKeys);
+    Material base;
+    base.name = name;
+    if (m.has("preset")) {
+      const std::string preset = m.string("preset", std::nullopt, {"latex", "epoxy"});
+      base = *material_preset(preset);
+      base.name = name;
+    } else if (auto known = material_preset(name)) {
+      base = *known;
+    }
+    const bool complete = base.youngs_modulus > 0.0;
+    auto value_or_required = [&](std::string_view key, double current, double scale) {
+      return m.number(key, complete ? std::optional<double>(current / scale) : std::nullopt,
+                      Bounds::positive()) *
+             scale;
+    };
+    base.youngs_modulus = value_or_required("E", base.youngs_modulus, units::MPa);
+    base.thickness = value_or_required("thickness", base.thickness, units::mm);
+    base.density = value_or_required("density", base.density, units::g_per_cm3);
+    out[name] = base;
+  }
+  return out;
+}
+
+void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& materials,
+                 Scene& scene) {
+  const JsonObject sheet = top.object("sheet", kSheetKeys);
+  const auto size = sheet.numbers("size", 2, Bounds::positive());
+  scene.grid.width = size[0] * units::mm;
+  scene.grid.height = size[1] * units::mm;
+  const auto& res = sheet.at("resolution");
+  if (!res.is_array() || res.size() != 2)
+    throw InputError(sheet.pointer("resolution"),
+                     "expected [nx, ny], the number of particles along x and y");
+  for (int k = 0; k < 2; ++k) {
+    const std::string ptr = sheet.pointer("resolution") + "/" + std::to_string(k);
+    const auto& v = res[static_cast<size_t>(k)];
+    if (!v.is_number_integer())
+      throw InputError(ptr, "expected an integer number of particles, got " + v.dump());
+    const long n = v.get<long>();
+    if (n < 2 || n > kMaxNodesPerSide)
+      throw InputError(ptr, "must be in [2, " + std::to_string(kMaxNodesPerSide) + "], got " +
+                                std::to_string(n));
+    (k == 0 ? scene.grid.nx : scene.grid.ny) = static_cast<int>(n);
+  }
+  // The homogenization (DESIGN.md section 3) is for square cells.
+  const double hx = size[0] / (scene.grid.nx - 1), hy = size[1] / (scene.grid.ny - 1);
+  if (std::abs(hx / hy - 1.0) > 0.01) {
+    std::ostringstream msg;
+    msg << "cells must be square for the lattice to be isotropic, but the spacing is " << hx
+        << " mm along x and " << hy << " mm along y; choose (nx-1)/(ny-1) = width/height";
+    throw InputError(sheet.pointer("resolution"), msg.str());
+  }
+  const std::string mat = sheet.string("material", "latex");
+  const auto it = materials.find(mat);
+  if (it == materials.end())
+    throw InputError(sheet.pointer("material"),
+                     "unknown material '" + mat + "': define it under /materials or use a preset "
+                     "(latex, epoxy)");
+  scene.sheet.material = it->second;
+  if (sheet.has("springs")) {
+    const JsonObject springs = sheet.object("springs", kSpringKeys);
+    scene.sheet.stretch = springs.boolean("stretch", true);
+    scene.sheet.shear = springs.boolean("shear", true);
+    scene.sheet.flex = springs.boolean("flex", false);
+    scene.sheet.flex_ratio = springs.number("flex_ratio", 0.1, Bounds::between(0.0, 10.0));
+    if (!scene.sheet.stretch && !scene.sheet.shear && !scene.sheet.flex)
+      throw InputError(sheet.pointer("springs"), "at least one spring family must be on");
+  }
+}
+
+void parse_pins(const JsonObject& top, const Scene& scene, std::vector<PinSpec>& pins) {
+  if (!top.has("pins")) return;
+  const auto& arr = top.at("pins");
+  if (!arr.is_array()) throw InputError("/pins", "expected an array, got " + json_type_name(arr));
+  const Bounds in_x = Bounds::between(0.0, scene.grid.width / units::mm);
+  const Bounds in_y = Bounds::between(0.0, scene.grid.height / units::mm);
+  for (size_t i = 0; i < arr.size(); ++i) {
+    const JsonObject p(arr[i], "/pins/" + std::to_string(i), kPinKeys);
+    int given = 0;
+    for (auto k : kPinKeys) given += p.has(k) ? 1 : 0;
+    if (given != 1)
+      throw InputError(p.pointer(), "give exactly one of corners, edge, point, box");
+    PinSpec pin;
+    if (p.has("corners")) {
+      if (!p.boolean("corners", std::nullopt)) continue;
+      pin.kind = PinSpec::Kind::corners;
+    } else if (p.has("edge")) {
+      pin.kind = PinSpec::Kind::edge;
+      pin.edge = p.string("edge", std::nullopt, {"left", "right", "bottom", "top"});
+    } else if (p.has("point")) {
+      pin.kind = PinSpec::Kind::point;
+      const auto& v = p.at("point");
+      if (!v.is_array() || v.size() != 2)
+        throw InputError(p.pointer("point"), "expected [x, y] in mm");
+      pin.point = {checked_number(v[0], p.pointer("point") + "/0", in_x) * units::mm,
+                   checked_number(v[1], p.pointer("point") + "/1", in_y) * units::mm};
+    } else {
+      pin.kind = PinSpec::Kind::box;
+      const auto b = p.numbers("box", 4);
+      for (int k = 0; k < 4; ++k)
+        checked_number(p.at("box")[static_cast<size_t>(k)],
+                       p.pointer("box") + "/" + std::to_string(k), k % 2 == 0 ? in_x : in_y);
+      if (!(b[2] >= b[0] && b[3] >= b[1]))
+        throw InputError(p.pointer("box"), "expected [x0, y0, x1, y1] with x1 >= x0, y1 >= y0");
+      pin.box_min = Vec2(b[0], b[1]) * units::mm;
+      pin.box_max = Vec2(b[2], b[3]) * units::mm;
+    }
+    pins.push_back(pin);
+  }
+}
+
+void parse_simulation(const JsonObject& top, Scene& scene) {
+  SimulationSpec& sim = scene.simulation;
+  if (!top.has("simulation")) return;
+  const JsonObject s = top.object("simulation", kSimulationKeys);
+  std::vector<std::string_view> solvers = integrator_names();
+  sim.solver = s.string("solver", sim.solver, solvers);
+  if (s.has("K"))
+    scene.sheet.stretch_stiffness = s.number("K", std::nullopt, Bounds::positive()) * units::N_per_mm;
+  sim.gravity = s.number("G", sim.gravity, Bounds::between(-1e4, 1e4));
+  sim.dt = s.number("T", sim.dt, Bounds{0.0, 1.0, true});
+  sim.damping = s.number("D", sim.damping, Bounds::non_negative());
+  scene.sheet.spring_damping =
+      s.number("spring_damping", 0.0, Bounds::non_negative()) * units::N_per_mm;
+  sim.steps = s.integer("steps", sim.steps, 0, 1'000'000'000L);
+  sim.tolerance = s.number("tolerance", sim.tolerance, Bounds{0.0, 1.0, true});
+  sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
+}
+
+std::vector<std::string> to_strings(const std::vector<std::string_view>& v) {
+  return {v.begin(), v.end()};
+}
+
+}  // namespace
+
+Scene parse_scene(const json& j) {
+  Scene scene;
+  const JsonObject top(j, "", kTopKeys);
+  scene.name = top.string("name", "untitled");
+  scene.description = top.string("description", "");
+  const auto materials = parse_materials(j);
+  parse_sheet(top, materials, scene);
+  parse_pins(top, scene, scene.pins);
+  parse_simulation(top, scene);
+  return scene;
+}
+
+void apply_override(json& scene, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set " + assignment, "expected PATH=VALUE, e.g. simulation.steps=500");
+  std::string pointer;
+  const std::string path = assignment.substr(0, eq);
+  size_t start = 0;
+  while (start <= path.size()) {
+    const size_t dot = std::min(path.find('.', start), path.size());
+    const std::string part = path.substr(start, dot - start);
+    if (part.empty())
+      throw InputError("--set " + assignment, "empty component in path '" + path + "'");
+    pointer += "/" + part;
+    start = dot + 1;
+  }
+  const std::string text = assignment.substr(eq + 1);
+  json value = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (value.is_discarded()) value = text;
+  try {
+    scene[json::json_pointer(pointer)] = value;
+  } catch (const json::exception& e) {
+    throw InputError("--set " + assignment, std::string("cannot set ") + pointer + ": " + e.what());
+  }
+}
+
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  const std::string name = file.string();
+  std::ifstream in(file);
+  if (!in) throw InputError(name, "cannot open the scene file (does it exist and is it readable?)");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(name, std::string("malformed JSON: ") + e.what());
+  }
+  try {
+    for (const auto& o : overrides) apply_override(j, o);
+  } catch (const InputError& e) {
+    throw InputError(name + ": " + e.where(), e.detail());
+  }
+  try {
+    Scene s = parse_scene(j);
+    s.file = file;
+    return s;
+  } catch (const InputError& e) {
+    throw InputError(e.where().empty() ? name : name + ": " + e.where(), e.detail());
+  }
+}
+
+std::map<std::string, std::vector<std::string>> scene_known_keys() {
+  return {{"", to_strings(kTopKeys)},
+          {"/sheet", to_strings(kSheetKeys)},
+          {"/sheet/springs", to_strings(kSpringKeys)},
+          {"/materials/*", to_strings(kMaterialKeys)},
+          {"/pins/*", to_strings(kPinKeys)},
+          {"/simulation", to_strings(kSimulationKeys)}};
+}
+
+}  // namespace membra

@@ -1,0 +1,81 @@
+#include "membra/model/forces.hpp"
+
+#include <algorithm>
+
+#include "membra/model/spring_kernel.hpp"
+
+namespace membra {
+namespace {
+
+void add_spring_forces(const Model& model, const Points& x, const Points* v, Points& f) {
+  const Springs& s = model.springs;
+  const Vec3 zero = Vec3::Zero();
+  for (int i = 0; i < s.size(); ++i) {
+    const int a = s.a[i], b = s.b[i];
+    const double c = v ? s.damping[i] : 0.0;
+    const Vec3 fa = spring_force_on_a(x.col(a), x.col(b), v ? Vec3(v->col(a)) : zero,
+                                      v ? Vec3(v->col(b)) : zero, s.rest_length[i],
+                                      s.stiffness[i], c);
+    f.col(a) += fa;
+    f.col(b) -= fa;
+  }
+}
+
+void add_gravity(const Model& model, Points& f) {
+  for (int p = 0; p < model.num_particles(); ++p) f.col(p) += model.mass[p] * model.gravity;
+}
+
+}  // namespace
+
+void compute_forces(const Model& model, const Points& x, const Points& v, Points& f) {
+  f.setZero(3, x.cols());
+  const bool dynamic = v.cols() == x.cols();
+  add_spring_forces(model, x, dynamic ? &v : nullptr, f);
+  add_gravity(model, f);
+  if (dynamic && model.velocity_damping != 0.0) {
+    for (int p = 0; p < model.num_particles(); ++p)
+      f.col(p) -= model.velocity_damping * model.mass[p] * v.col(p);
+  }
+}
+
+void compute_static_forces(const Model& model, const Points& x, Points& f) {
+  f.setZero(3, x.cols());
+  add_spring_forces(model, x, nullptr, f);
+  add_gravity(model, f);
+}
+
+double elastic_energy(const Model& model, const Points& x) {
+  const Springs& s = model.springs;
+  double e = 0.0;
+  for (int i = 0; i < s.size(); ++i)
+    e += spring_energy(x.col(s.a[i]), x.col(s.b[i]), s.rest_length[i], s.stiffness[i]);
+  return e;
+}
+
+double gravity_energy(const Model& model, const Points& x) {
+  double e = 0.0;
+  for (int p = 0; p < model.num_particles(); ++p) e -= model.mass[p] * model.gravity.dot(x.col(p));
+  return e;
+}
+
+double potential_energy(const Model& model, const Points& x) {
+  return elastic_energy(model, x) + gravity_energy(model, x);
+}
+
+double kinetic_energy(const Model& model, const Points& v) {
+  double e = 0.0;
+  for (int p = 0; p < model.num_particles(); ++p)
+    if (!model.pinned(p)) e += 0.5 * model.mass[p] * v.col(p).squaredNorm();
+  return e;
+}
+
+double max_residual_force(const Model& model, const Points& x) {
+  Points f;
+  compute_static_forces(model, x, f);
+  double r = 0.0;
+  for (int p = 0; p < model.num_particles(); ++p)
+    if (!model.pinned(p)) r = std::max(r, f.col(p).norm());
+  return r;
+}
+
+}  // namespace membra

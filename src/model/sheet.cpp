@@ -1,0 +1,84 @@
+#include "membra/model/sheet.hpp"
+
+#include <stdexcept>
+
+namespace membra {
+namespace {
+
+LatticeStiffness lattice_stiffness(const SheetOptions& o) {
+  const double ratio = o.flex ? o.flex_ratio : 0.0;
+  LatticeStiffness k = homogenize(o.material, ratio);
+  if (o.stretch_stiffness) {
+    // The paper's K sets the stretch springs; the others keep their isotropic ratios.
+    const double scale = *o.stretch_stiffness / k.stretch;
+    k.stretch *= scale;
+    k.shear *= scale;
+    k.flex *= scale;
+  }
+  return k;
+}
+
+void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const LatticeStiffness& k,
+                         Model& m) {
+  auto connect = [&](int pa, int pb, double kk, SpringFamily fam) {
+    const double l0 = (m.reference.col(pb) - m.reference.col(pa)).norm();
+    m.springs.add(pa, pb, l0, kk, o.spring_damping, fam);
+  };
+  for (int j = 0; j < g.ny(); ++j) {
+    for (int i = 0; i < g.nx(); ++i) {
+      const int p = g.particle(i, j);
+      if (p < 0) continue;
+      if (o.stretch) {
+        if (const int q = g.particle(i + 1, j); q >= 0) connect(p, q, k.stretch, SpringFamily::stretch);
+        if (const int q = g.particle(i, j + 1); q >= 0) connect(p, q, k.stretch, SpringFamily::stretch);
+      }
+      if (o.shear && g.cell_active(i, j)) {
+        connect(p, g.particle(i + 1, j + 1), k.shear, SpringFamily::shear);
+        connect(g.particle(i + 1, j), g.particle(i, j + 1), k.shear, SpringFamily::shear);
+      }
+      if (o.flex) {
+        if (g.particle(i + 1, j) >= 0 && g.particle(i + 2, j) >= 0)
+          connect(p, g.particle(i + 2, j), k.flex, SpringFamily::flex);
+        if (g.particle(i, j + 1) >= 0 && g.particle(i, j + 2) >= 0)
+          connect(p, g.particle(i, j + 2), k.flex, SpringFamily::flex);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Sheet build_sheet(const GridSpec& spec, const SheetOptions& o, const NodeMask& keep) {
+  const Material& mat = o.material;
+  if (!(mat.youngs_modulus > 0.0) || !(mat.thickness > 0.0) || !(mat.density > 0.0))
+    throw std::invalid_argument("sheet material: E, thickness and density must be positive");
+  if (o.stretch_stiffness && !(*o.stretch_stiffness > 0.0))
+    throw std::invalid_argument("sheet: stretch stiffness K must be positive");
+  GridSheet grid = GridSheet(spec, keep).without_isolated_nodes();
+  if (grid.num_particles() == 0) throw std::invalid_argument("sheet: the mask removes every cell");
+
+  Model m;
+  const int n = grid.num_particles();
+  m.mass.assign(n, 0.0);
+  m.reference = Points::Zero(3, n);
+  for (int p = 0; p < n; ++p) {
+    const auto [i, j] = grid.node(p);
+    m.reference.col(p).head<2>() = grid.position(i, j);
+  }
+  const double cell_mass = grid.hx() * grid.hy() * mat.thickness * mat.density;
+  for (int j = 0; j + 1 < grid.ny(); ++j)
+    for (int i = 0; i + 1 < grid.nx(); ++i)
+      if (grid.cell_active(i, j))
+        for (int p : {grid.particle(i, j), grid.particle(i + 1, j), grid.particle(i, j + 1),
+                      grid.particle(i + 1, j + 1)})
+          m.mass[p] += 0.25 * cell_mass;
+  m.inv_mass.resize(n);
+  for (int p = 0; p < n; ++p) m.inv_mass[p] = 1.0 / m.mass[p];
+
+  const LatticeStiffness k = lattice_stiffness(o);
+  add_lattice_springs(grid, o, k, m);
+  std::vector<Triangle> tris = triangulate(grid);
+  return Sheet{std::move(grid), std::move(m), std::move(tris), k};
+}
+
+}  // namespace membra
