@@ -33,8 +33,8 @@ int cmd_validate(const std::string& scene_file, const std::vector<std::string>& 
   return kOk;
 }
 
-int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets, std::string out_dir,
-            bool quiet) {
+int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
+            std::string out_dir, bool quiet) {
   const membra::Scene scene = membra::load_scene(scene_file, sets);
   try {
     (void)membra::prepare_scene(scene);  // fail on bad input before touching the disk
@@ -78,7 +78,8 @@ int main(int argc, char** argv) {
   std::string scene_file, out_dir;
   std::vector<std::string> sets;
   bool quiet = false;
-  const char* set_help = "Override a scene value before validation, e.g. --set simulation.steps=500";
+  const char* set_help =
+      "Override a scene value before validation, e.g. --set simulation.steps=500";
   auto* run = app.add_subcommand("run", "Run a scene and write its results");
   run->add_option("scene", scene_file, "Scene file (JSON)")->required();
   run->add_option("--out,-o", out_dir, "Output directory (default: out/<scene name>)");

@@ -8,7 +8,9 @@ namespace membra::cli {
 
 ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), tty_(::isatty(STDERR_FILENO) != 0) {}
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+  finish();
+}
 
 void ProgressBar::update(const Progress& p) {
   if (!enabled_ || p.wall_seconds < 1.0) return;
@@ -22,9 +24,9 @@ void ProgressBar::update(const Progress& p) {
   char bar[width + 1];
   for (int i = 0; i < width; ++i) bar[i] = i < filled ? '#' : '.';
   bar[width] = '\0';
-  std::fprintf(stderr, "%s[%s] %3.0f%%  step %ld/%ld  residual %.2e  %.1f s%s",
-               tty_ ? "\r" : "", bar, 100.0 * frac, p.iteration, p.max_iterations,
-               p.residual_relative, p.wall_seconds, tty_ ? "" : "\n");
+  std::fprintf(stderr, "%s[%s] %3.0f%%  step %ld/%ld  residual %.2e  %.1f s%s", tty_ ? "\r" : "",
+               bar, 100.0 * frac, p.iteration, p.max_iterations, p.residual_relative,
+               p.wall_seconds, tty_ ? "" : "\n");
   std::fflush(stderr);
   drawn_ = true;
 }

@@ -45,7 +45,9 @@ JsonObject::JsonObject(const nlohmann::json& j, std::string pointer,
   }
 }
 
-bool JsonObject::has(std::string_view key) const { return j_.contains(std::string(key)); }
+bool JsonObject::has(std::string_view key) const {
+  return j_.contains(std::string(key));
+}
 
 const nlohmann::json& JsonObject::at(std::string_view key) const {
   if (!has(key)) throw InputError(pointer(key), "is required");
@@ -61,14 +63,14 @@ long JsonObject::integer(std::string_view key, std::optional<long> fallback, lon
                          long hi) const {
   if (!has(key) && fallback) return *fallback;
   const auto& v = at(key);
-  if (!v.is_number_integer() && !(v.is_number_float() && std::floor(v.get<double>()) ==
-                                                             v.get<double>()))
+  if (!v.is_number_integer() &&
+      !(v.is_number_float() && std::floor(v.get<double>()) == v.get<double>()))
     throw InputError(pointer(key), "expected an integer, got " + json_type_name(v) +
                                        (v.is_number() ? " " + v.dump() : ""));
   const double x = v.get<double>();
   if (x < static_cast<double>(lo) || x > static_cast<double>(hi))
-    throw InputError(pointer(key), "must be in [" + std::to_string(lo) + ", " +
-                                       std::to_string(hi) + "], got " + v.dump());
+    throw InputError(pointer(key), "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                                       "], got " + v.dump());
   return static_cast<long>(x);
 }
 
@@ -97,10 +99,10 @@ std::string JsonObject::string(std::string_view key, std::optional<std::string> 
 std::vector<double> JsonObject::numbers(std::string_view key, size_t count, Bounds b) const {
   const auto& v = at(key);
   if (!v.is_array() || v.size() != count)
-    throw InputError(pointer(key), "expected an array of " + std::to_string(count) +
-                                       " numbers, got " +
-                                       (v.is_array() ? "an array of " + std::to_string(v.size())
-                                                     : json_type_name(v)));
+    throw InputError(
+        pointer(key),
+        "expected an array of " + std::to_string(count) + " numbers, got " +
+            (v.is_array() ? "an array of " + std::to_string(v.size()) : json_type_name(v)));
   std::vector<double> out;
   for (size_t i = 0; i < count; ++i)
     out.push_back(checked_number(v[i], pointer(key) + "/" + std::to_string(i), b));

@@ -10,7 +10,9 @@ namespace membra {
 namespace fs = std::filesystem;
 
 namespace {
-std::string tmp_suffix() { return ".tmp-" + std::to_string(::getpid()); }
+std::string tmp_suffix() {
+  return ".tmp-" + std::to_string(::getpid());
+}
 }  // namespace
 
 OutputSet::OutputSet(fs::path dir) : dir_(std::move(dir)) {
@@ -18,7 +20,7 @@ OutputSet::OutputSet(fs::path dir) : dir_(std::move(dir)) {
   fs::create_directories(dir_, ec);
   if (ec || !fs::is_directory(dir_))
     throw OutputError("output directory " + dir_.string() + ": cannot create it (" +
-                             (ec ? ec.message() : "not a directory") + ")");
+                      (ec ? ec.message() : "not a directory") + ")");
   // Probe with a real file: permission bits alone do not tell (root, read-only mounts).
   const fs::path probe = dir_ / (".membra-write-test" + tmp_suffix());
   {

@@ -17,8 +17,8 @@ PreparedScene prepare_scene(const Scene& scene) {
   m.gravity = Vec3(0.0, 0.0, -scene.simulation.gravity);
   m.velocity_damping = scene.simulation.damping;
   p.state = State::at_rest(m);
-  const double k = p.sheet.stiffness.stretch > 0.0 ? p.sheet.stiffness.stretch
-                                                    : p.sheet.stiffness.shear;
+  const double k =
+      p.sheet.stiffness.stretch > 0.0 ? p.sheet.stiffness.stretch : p.sheet.stiffness.shear;
   p.force_scale = k * p.sheet.grid.hx();
   return p;
 }

@@ -14,7 +14,7 @@ namespace {
 using nlohmann::json;
 
 // Known keys, one list per object; scene_known_keys() exposes them for the schema test.
-const std::vector<std::string_view> kTopKeys = {"$schema", "name", "description", "sheet",
+const std::vector<std::string_view> kTopKeys = {"$schema",   "name", "description", "sheet",
                                                 "materials", "pins", "simulation"};
 const std::vector<std::string_view> kSheetKeys = {"size", "resolution", "material", "springs"};
 const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
@@ -32,8 +32,8 @@ std::map<std::string, Material> parse_materials(const json& j) {
   if (!j.contains("materials")) return out;
   const auto& mats = j.at("materials");
   if (!mats.is_object())
-    throw InputError("/materials", "expected an object of named materials, got " +
-                                       json_type_name(mats));
+    throw InputError("/materials",
+                     "expected an object of named materials, got " + json_type_name(mats));
   for (const auto& [name, value] : mats.items()) {
     const std::string ptr = "/materials/" + name;
     JsonObject m(value, ptr, kMaterialKeys);
@@ -92,9 +92,9 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
   const std::string mat = sheet.string("material", "latex");
   const auto it = materials.find(mat);
   if (it == materials.end())
-    throw InputError(sheet.pointer("material"),
-                     "unknown material '" + mat + "': define it under /materials or use a preset "
-                     "(latex, epoxy)");
+    throw InputError(sheet.pointer("material"), "unknown material '" + mat +
+                                                    "': define it under /materials or use a preset "
+                                                    "(latex, epoxy)");
   scene.sheet.material = it->second;
   if (sheet.has("springs")) {
     const JsonObject springs = sheet.object("springs", kSpringKeys);
@@ -117,8 +117,7 @@ void parse_pins(const JsonObject& top, const Scene& scene, std::vector<PinSpec>&
     const JsonObject p(arr[i], "/pins/" + std::to_string(i), kPinKeys);
     int given = 0;
     for (auto k : kPinKeys) given += p.has(k) ? 1 : 0;
-    if (given != 1)
-      throw InputError(p.pointer(), "give exactly one of corners, edge, point, box");
+    if (given != 1) throw InputError(p.pointer(), "give exactly one of corners, edge, point, box");
     PinSpec pin;
     if (p.has("corners")) {
       if (!p.boolean("corners", std::nullopt)) continue;
@@ -155,7 +154,8 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   std::vector<std::string_view> solvers = integrator_names();
   sim.solver = s.string("solver", sim.solver, solvers);
   if (s.has("K"))
-    scene.sheet.stretch_stiffness = s.number("K", std::nullopt, Bounds::positive()) * units::N_per_mm;
+    scene.sheet.stretch_stiffness =
+        s.number("K", std::nullopt, Bounds::positive()) * units::N_per_mm;
   sim.gravity = s.number("G", sim.gravity, Bounds::between(-1e4, 1e4));
   sim.dt = s.number("T", sim.dt, Bounds{0.0, 1.0, true});
   sim.damping = s.number("D", sim.damping, Bounds::non_negative());

@@ -13,9 +13,9 @@ void add_spring_forces(const Model& model, const Points& x, const Points* v, Poi
   for (int i = 0; i < s.size(); ++i) {
     const int a = s.a[i], b = s.b[i];
     const double c = v ? s.damping[i] : 0.0;
-    const Vec3 fa = spring_force_on_a(x.col(a), x.col(b), v ? Vec3(v->col(a)) : zero,
-                                      v ? Vec3(v->col(b)) : zero, s.rest_length[i],
-                                      s.stiffness[i], c);
+    const Vec3 fa =
+        spring_force_on_a(x.col(a), x.col(b), v ? Vec3(v->col(a)) : zero,
+                          v ? Vec3(v->col(b)) : zero, s.rest_length[i], s.stiffness[i], c);
     f.col(a) += fa;
     f.col(b) -= fa;
   }

@@ -4,7 +4,9 @@
 
 namespace membra {
 
-Material latex() { return {"latex", 1.5 * units::MPa, 0.5 * units::mm, 0.93 * units::g_per_cm3}; }
+Material latex() {
+  return {"latex", 1.5 * units::MPa, 0.5 * units::mm, 0.93 * units::g_per_cm3};
+}
 
 Material epoxy() {
   return {"epoxy", 2500.0 * units::MPa, 0.5 * units::mm, 1.2 * units::g_per_cm3};

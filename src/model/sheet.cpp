@@ -29,8 +29,10 @@ void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const Lattic
       const int p = g.particle(i, j);
       if (p < 0) continue;
       if (o.stretch) {
-        if (const int q = g.particle(i + 1, j); q >= 0) connect(p, q, k.stretch, SpringFamily::stretch);
-        if (const int q = g.particle(i, j + 1); q >= 0) connect(p, q, k.stretch, SpringFamily::stretch);
+        if (const int q = g.particle(i + 1, j); q >= 0)
+          connect(p, q, k.stretch, SpringFamily::stretch);
+        if (const int q = g.particle(i, j + 1); q >= 0)
+          connect(p, q, k.stretch, SpringFamily::stretch);
       }
       if (o.shear && g.cell_active(i, j)) {
         connect(p, g.particle(i + 1, j + 1), k.shear, SpringFamily::shear);

@@ -4,10 +4,14 @@ namespace membra {
 
 std::string_view to_string(SpringFamily f) {
   switch (f) {
-    case SpringFamily::stretch: return "stretch";
-    case SpringFamily::shear: return "shear";
-    case SpringFamily::flex: return "flex";
-    case SpringFamily::added: return "added";
+    case SpringFamily::stretch:
+      return "stretch";
+    case SpringFamily::shear:
+      return "shear";
+    case SpringFamily::flex:
+      return "flex";
+    case SpringFamily::added:
+      return "added";
   }
   return "unknown";
 }

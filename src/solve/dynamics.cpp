@@ -45,8 +45,8 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
     if (!state.x.allFinite() || !state.v.allFinite() || extent(state.x) > 100.0 * size0) {
       r.diverged = true;
       std::ostringstream msg;
-      msg << o.method << " diverged at step " << step << " (t = " << state.time << " s): "
-          << (state.x.allFinite() ? "the sheet blew up" : "positions became NaN/Inf")
+      msg << o.method << " diverged at step " << step << " (t = " << state.time
+          << " s): " << (state.x.allFinite() ? "the sheet blew up" : "positions became NaN/Inf")
           << ". Try a smaller time step T (now " << o.dt << " s), more damping D, or the static "
           << "solver.";
       r.message = msg.str();
@@ -68,8 +68,8 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
   r.wall_seconds = seconds();
   std::ostringstream msg;
   msg << o.method << ": " << (r.converged ? "converged" : "not converged") << " after "
-      << r.iterations << " steps, residual " << r.residual_relative << " (tolerance "
-      << o.tolerance << ")";
+      << r.iterations << " steps, residual " << r.residual_relative << " (tolerance " << o.tolerance
+      << ")";
   r.message = msg.str();
   return r;
 }

@@ -67,8 +67,12 @@ class SymplecticEuler final : public Integrator {
 
 }  // namespace
 
-std::unique_ptr<Integrator> make_rk4() { return std::make_unique<Rk4>(); }
-std::unique_ptr<Integrator> make_symplectic_euler() { return std::make_unique<SymplecticEuler>(); }
+std::unique_ptr<Integrator> make_rk4() {
+  return std::make_unique<Rk4>();
+}
+std::unique_ptr<Integrator> make_symplectic_euler() {
+  return std::make_unique<SymplecticEuler>();
+}
 
 std::unique_ptr<Integrator> make_integrator(std::string_view name) {
   if (name == "rk4") return make_rk4();
@@ -76,6 +80,8 @@ std::unique_ptr<Integrator> make_integrator(std::string_view name) {
   return nullptr;
 }
 
-std::vector<std::string_view> integrator_names() { return {"rk4", "symplectic_euler"}; }
+std::vector<std::string_view> integrator_names() {
+  return {"rk4", "symplectic_euler"};
+}
 
 }  // namespace membra

@@ -1,1 +1,169 @@
+// The membra command line, run as a user would run it.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <sys/wait.h>
+
 #include <gtest/gtest.h>
+
+#include "test_util.hpp"
+
+#include "membra/io/report.hpp"
+#include "membra/io/run.hpp"
+#include "membra/io/scene.hpp"
+
+namespace membra {
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct Output {
+  int code;
+  std::string text;  // stdout and stderr together
+};
+
+Output membra_cli(const std::string& args) {
+  const std::string cmd = std::string(MEMBRA_CLI) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string text;
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), p)) text.append(buf.data(), n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+}
+
+const std::string kExp1 = std::string(MEMBRA_SOURCE_DIR) + "/examples/exp1_basic.json";
+// Small and short, so the test is fast; the full scene runs in the demo.
+const std::vector<std::string> kSmall = {"sheet.resolution=[11,11]", "simulation.steps=400"};
+
+class Cli : public ::testing::Test {
+ protected:
+  fs::path dir = unique_temp_dir();
+  void SetUp() override {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  }
+  static std::string sets() {
+    std::string s;
+    for (const auto& o : kSmall) s += " --set '" + o + "'";
+    return s;
+  }
+};
+
+TEST_F(Cli, VersionAndHelp) {
+  const Output v = membra_cli("--version");
+  EXPECT_EQ(v.code, 0);
+  EXPECT_NE(v.text.find("membra 0."), std::string::npos) << v.text;
+  for (const char* sub : {"run", "validate"}) {
+    const Output h = membra_cli(std::string(sub) + " --help");
+    EXPECT_EQ(h.code, 0) << sub;
+    EXPECT_NE(h.text.find("Usage"), std::string::npos) << sub;
+  }
+  EXPECT_EQ(membra_cli("").code, 2);  // a subcommand is required
+}
+
+TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
+  const fs::path out = dir / "exp1";
+  const Output o = membra_cli("run " + kExp1 + sets() + " --quiet --out " + out.string());
+  ASSERT_EQ(o.code, 0) << o.text;
+  ASSERT_TRUE(fs::exists(out / "final.obj"));
+  std::ifstream in(out / "report.json");
+  const json report = json::parse(in);
+
+  const Scene scene = load_scene(kExp1, kSmall);
+  const RunResult r = run_scene(scene);
+  EXPECT_EQ(report["particles"], 121);
+  EXPECT_EQ(report["particles"], r.prepared.sheet.model.num_particles());
+  EXPECT_EQ(report["springs"], r.prepared.sheet.model.springs.size());
+  EXPECT_EQ(report["iterations"], r.solve.iterations);
+  EXPECT_EQ(report["converged"], r.solve.converged);
+  // The run is deterministic: the same numbers to the last bit.
+  EXPECT_EQ(report["residual"].get<double>(), r.solve.residual);
+  EXPECT_EQ(report["energy"].get<double>(), r.elastic_energy + r.gravity_energy);
+  EXPECT_EQ(report["shape"]["height"].get<double>(),
+            r.shape.height / 1e-3);  // m to mm, as the report does
+  // The sheet sags under gravity: height positive, energy negative (gravity wins).
+  EXPECT_GT(report["shape"]["height"].get<double>(), 1.0);
+  EXPECT_LT(report["energy"].get<double>(), 0.0);
+  for (const char* key : {"residual", "energy", "shape.height", "wall_seconds"})
+    EXPECT_TRUE(report["units"].contains(key)) << key;
+  // OBJ: 121 vertices and 200 triangles.
+  std::ifstream obj(out / "final.obj");
+  int v = 0, f = 0;
+  for (std::string line; std::getline(obj, line);) {
+    v += line.rfind("v ", 0) == 0;
+    f += line.rfind("f ", 0) == 0;
+  }
+  EXPECT_EQ(v, 121);
+  EXPECT_EQ(f, 200);
+}
+
+TEST_F(Cli, ValidateGoodAndBrokenScenes) {
+  const Output good = membra_cli("validate " + kExp1);
+  EXPECT_EQ(good.code, 0) << good.text;
+  EXPECT_NE(good.text.find("valid"), std::string::npos);
+  const Output bad = membra_cli("validate " + kExp1 + " --set simulation.D=-2");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.text.find("exp1_basic.json: /simulation/D: must be >= 0"), std::string::npos)
+      << bad.text;
+}
+
+TEST_F(Cli, BadInputFailsCleanlyAndWritesNothing) {
+  std::ifstream in(kExp1);
+  const json good = json::parse(in);
+  json negative = good, zero = good;
+  negative["simulation"]["K"] = -0.5;
+  zero["sheet"]["resolution"] = {0, 41};
+  struct Case {
+    std::string scene, expect;
+  };
+  const Case cases[] = {
+      {write("malformed.json", "{\"sheet\": [1, 2,}").string(), "malformed.json: malformed JSON"},
+      {write("negative.json", negative.dump()).string(),
+       "negative.json: /simulation/K: must be > 0"},
+      {write("zero.json", zero.dump()).string(), "zero.json: /sheet/resolution/0: must be in [2"},
+      {(dir / "missing.json").string(), "missing.json: cannot open"},
+  };
+  for (const auto& c : cases) {
+    const fs::path out = dir / "out";
+    const Output o = membra_cli("run " + c.scene + " --out " + out.string());
+    EXPECT_EQ(o.code, 2) << o.text;
+    EXPECT_NE(o.text.find(c.expect), std::string::npos) << o.text;
+    EXPECT_FALSE(fs::exists(out)) << c.scene;
+  }
+}
+
+TEST_F(Cli, UnwritableOutputDirectory) {
+  write("blocker", "a file where a directory should be");
+  const Output o = membra_cli("run " + kExp1 + sets() + " --out " + (dir / "blocker/out").string());
+  EXPECT_EQ(o.code, 4) << o.text;
+  EXPECT_NE(o.text.find("blocker/out"), std::string::npos) << o.text;
+  EXPECT_NE(o.text.find("cannot create"), std::string::npos) << o.text;
+}
+
+TEST_F(Cli, DivergedRunWritesOnlyAFailureReport) {
+  // A time step far beyond RK4's stability limit for these springs.
+  const fs::path out = dir / "boom";
+  const Output o =
+      membra_cli("run " + kExp1 + sets() + " --set simulation.T=0.01 --set simulation.D=0 --out " +
+                 out.string());
+  EXPECT_EQ(o.code, 3) << o.text;
+  EXPECT_NE(o.text.find("diverged"), std::string::npos) << o.text;
+  EXPECT_NE(o.text.find("smaller time step"), std::string::npos) << o.text;
+  EXPECT_FALSE(fs::exists(out / "final.obj"));
+  std::ifstream in(out / "report.json");
+  const json report = json::parse(in);
+  EXPECT_EQ(report["status"], "diverged");
+  EXPECT_EQ(report["converged"], false);
+  EXPECT_FALSE(report.contains("energy"));
+}
+
+}  // namespace
+}  // namespace membra

@@ -1,1 +1,175 @@
+// Scene parsing: values converted to SI, and every bad input named by its JSON pointer.
+#include <filesystem>
+#include <fstream>
+
 #include <gtest/gtest.h>
+
+#include "test_util.hpp"
+
+#include "membra/io/run.hpp"
+#include "membra/io/scene.hpp"
+
+namespace membra {
+namespace {
+
+using nlohmann::json;
+
+json minimal() {
+  return json::parse(R"({
+    "name": "t",
+    "sheet": {"size": [100, 50], "resolution": [11, 6]},
+    "pins": [{"corners": true}],
+    "simulation": {"solver": "rk4", "T": 2e-4, "D": 3, "G": 9.81, "steps": 10}
+  })");
+}
+
+// The InputError's location, or "" when parsing succeeded.
+std::string error_at(const json& j) {
+  try {
+    parse_scene(j);
+  } catch (const InputError& e) {
+    return e.where();
+  }
+  return "";
+}
+
+TEST(Scene, ConvertsToSI) {
+  json j = minimal();
+  j["materials"] = {{"soft", {{"E", 3.0}, {"thickness", 0.25}, {"density", 1.1}}}};
+  j["sheet"]["material"] = "soft";
+  j["simulation"]["K"] = 2.0;
+  const Scene s = parse_scene(j);
+  EXPECT_DOUBLE_EQ(s.grid.width, 0.1);
+  EXPECT_DOUBLE_EQ(s.grid.height, 0.05);
+  EXPECT_EQ(s.grid.nx, 11);
+  EXPECT_DOUBLE_EQ(s.sheet.material.youngs_modulus, 3e6);
+  EXPECT_DOUBLE_EQ(s.sheet.material.thickness, 0.25e-3);
+  EXPECT_DOUBLE_EQ(s.sheet.material.density, 1100.0);
+  EXPECT_DOUBLE_EQ(*s.sheet.stretch_stiffness, 2000.0);  // 2 N/mm
+  EXPECT_DOUBLE_EQ(s.simulation.dt, 2e-4);
+  EXPECT_DOUBLE_EQ(s.simulation.damping, 3.0);
+  EXPECT_EQ(s.simulation.steps, 10);
+  ASSERT_EQ(s.pins.size(), 1u);
+}
+
+TEST(Scene, MaterialPresetsCanBePartlyOverridden) {
+  json j = minimal();
+  j["materials"] = {{"latex", {{"thickness", 1.0}}}};
+  const Scene s = parse_scene(j);
+  EXPECT_DOUBLE_EQ(s.sheet.material.youngs_modulus, 1.5e6);
+  EXPECT_DOUBLE_EQ(s.sheet.material.thickness, 1e-3);
+}
+
+TEST(Scene, ErrorsNameTheJsonPointer) {
+  struct Case {
+    const char* patch;  // JSON merge patch applied to minimal()
+    const char* where;
+  };
+  const Case cases[] = {
+      {R"({"sheet": {"resolution": [0, 6]}})", "/sheet/resolution/0"},
+      {R"({"sheet": {"resolution": [11, 6.5]}})", "/sheet/resolution/1"},
+      {R"({"sheet": {"resolution": [11, 11]}})", "/sheet/resolution"},  // non-square cells
+      {R"({"sheet": {"size": [100, -5]}})", "/sheet/size/1"},
+      {R"({"sheet": {"size": "big"}})", "/sheet/size"},
+      {R"({"sheet": {"colour": "red"}})", "/sheet/colour"},
+      {R"({"sheet": {"material": "steel"}})", "/sheet/material"},
+      {R"({"materials": {"latex": {"E": -1.5}}})", "/materials/latex/E"},
+      {R"({"materials": {"foam": {"E": 1}}})", "/materials/foam/thickness"},
+      {R"({"simulation": {"K": -0.5}})", "/simulation/K"},
+      {R"({"simulation": {"T": 0}})", "/simulation/T"},
+      {R"({"simulation": {"D": -1}})", "/simulation/D"},
+      {R"({"simulation": {"solver": "euler"}})", "/simulation/solver"},
+      {R"({"simulation": {"steps": -3}})", "/simulation/steps"},
+      {R"({"pins": [{"edge": "middle"}]})", "/pins/0/edge"},
+      {R"({"pins": [{"point": [500, 10]}]})", "/pins/0/point/0"},
+      {R"({"pins": [{"edge": "left", "corners": true}]})", "/pins/0"},
+      {R"({"gravity": 1})", "/gravity"},
+  };
+  for (const auto& c : cases) {
+    json j = minimal();
+    j.merge_patch(json::parse(c.patch));
+    EXPECT_EQ(error_at(j), c.where) << c.patch;
+  }
+  json j = minimal();
+  j.erase("sheet");
+  EXPECT_EQ(error_at(j), "/sheet");
+}
+
+TEST(Scene, MessagesSayWhatIsWrong) {
+  json j = minimal();
+  j["simulation"]["K"] = -0.5;
+  try {
+    parse_scene(j);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "/simulation/K: must be > 0, got -0.5");
+  }
+}
+
+class SceneFile : public ::testing::Test {
+ protected:
+  std::filesystem::path dir = unique_temp_dir();
+  void SetUp() override { std::filesystem::create_directories(dir); }
+  void TearDown() override { std::filesystem::remove_all(dir); }
+  std::filesystem::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  }
+};
+
+TEST_F(SceneFile, MalformedJsonNamesFileAndLine) {
+  const auto f = write("bad.json", "{\n  \"name\": \"x\",\n  \"sheet\": {,}\n}\n");
+  try {
+    load_scene(f);
+    FAIL();
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("bad.json"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("malformed JSON"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("line 3"), std::string::npos) << msg;
+  }
+}
+
+TEST_F(SceneFile, FieldErrorsNameFileAndPointer) {
+  json j = minimal();
+  j["sheet"]["resolution"] = {0, 6};
+  const auto f = write("zero.json", j.dump());
+  try {
+    load_scene(f);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), f.string() + ": /sheet/resolution/0");
+  }
+}
+
+TEST_F(SceneFile, MissingFile) {
+  EXPECT_THROW(load_scene(dir / "nope.json"), InputError);
+}
+
+TEST_F(SceneFile, OverridesApplyBeforeValidation) {
+  const auto f = write("ok.json", minimal().dump());
+  const Scene s =
+      load_scene(f, {"simulation.steps=77", "sheet.size.0=200", "sheet.resolution=[21,6]"});
+  EXPECT_EQ(s.simulation.steps, 77);
+  EXPECT_DOUBLE_EQ(s.grid.width, 0.2);
+  EXPECT_EQ(s.grid.nx, 21);
+  EXPECT_THROW(load_scene(f, {"simulation.steps"}), InputError);
+  EXPECT_THROW(load_scene(f, {"simulation.T=-1"}), InputError);
+  // A string value that is not JSON is taken as a string.
+  EXPECT_EQ(load_scene(f, {"name=plain words"}).name, "plain words");
+}
+
+TEST(Scene, PinsThatSelectNothingAreReportedAtPins) {
+  json j = minimal();
+  j["pins"] = {{{"box", {1, 1, 2, 2}}}};  // between nodes (spacing 10 mm)
+  const Scene s = parse_scene(j);
+  try {
+    prepare_scene(s);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/pins");
+  }
+}
+
+}  // namespace
+}  // namespace membra

@@ -1,1 +1,62 @@
+// docs/scene.schema.json and the parser agree on every key, and the bundled examples are valid.
+#include <filesystem>
+#include <fstream>
+#include <set>
+
 #include <gtest/gtest.h>
+
+#include "membra/io/run.hpp"
+#include "membra/io/scene.hpp"
+
+namespace membra {
+namespace {
+
+using nlohmann::json;
+
+json load_json(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return json::parse(in);
+}
+
+// The schema object describing the value at a key pattern such as "/pins/*".
+const json& schema_at(const json& schema, const std::string& pattern) {
+  const json* node = &schema;
+  size_t start = 1;
+  while (start <= pattern.size() && !pattern.empty()) {
+    const size_t slash = std::min(pattern.find('/', start), pattern.size());
+    const std::string part = pattern.substr(start, slash - start);
+    if (part == "*")
+      node = node->contains("items") ? &(*node)["items"] : &(*node)["additionalProperties"];
+    else
+      node = &(*node)["properties"][part];
+    start = slash + 1;
+  }
+  return *node;
+}
+
+TEST(Schema, KeysMatchTheParser) {
+  const json schema =
+      load_json(std::filesystem::path(MEMBRA_SOURCE_DIR) / "docs/scene.schema.json");
+  for (const auto& [pattern, keys] : scene_known_keys()) {
+    const json& node = schema_at(schema, pattern);
+    ASSERT_TRUE(node.contains("properties")) << pattern;
+    std::set<std::string> in_schema;
+    for (const auto& [k, v] : node["properties"].items()) in_schema.insert(k);
+    EXPECT_EQ(in_schema, std::set<std::string>(keys.begin(), keys.end())) << pattern;
+    EXPECT_EQ(node.value("additionalProperties", true), false) << pattern;
+  }
+}
+
+TEST(Schema, EveryExampleSceneIsValid) {
+  int n = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::filesystem::path(MEMBRA_SOURCE_DIR) / "examples")) {
+    if (entry.path().extension() != ".json") continue;
+    ++n;
+    EXPECT_NO_THROW(prepare_scene(load_scene(entry.path()))) << entry.path();
+  }
+  EXPECT_GE(n, 1);
+}
+
+}  // namespace
+}  // namespace membra

@@ -28,8 +28,8 @@ TEST(Material, HomogenizationWithFlexSpringsKeepsIsotropy) {
   const double ratio = 0.1;
   const LatticeStiffness k = homogenize(latex(), ratio);
   const double c11 = k.stretch + k.shear + 4.0 * k.flex, c12 = k.shear, c66 = k.shear;
-  EXPECT_NEAR(c66, 0.5 * (c11 - c12), 1e-9);            // isotropy
-  EXPECT_NEAR(c12 / c11, 1.0 / 3.0, 1e-12);              // Poisson ratio
+  EXPECT_NEAR(c66, 0.5 * (c11 - c12), 1e-9);                // isotropy
+  EXPECT_NEAR(c12 / c11, 1.0 / 3.0, 1e-12);                 // Poisson ratio
   EXPECT_NEAR((c11 * c11 - c12 * c12) / c11, 750.0, 1e-9);  // E t
   EXPECT_NEAR(k.flex / k.stretch, ratio, 1e-12);
   EXPECT_NEAR(membrane_stiffness_from_stretch(k.stretch, ratio), 750.0, 1e-9);

@@ -31,7 +31,7 @@ TEST(Sheet, SpringFamiliesOnAFullGrid) {
   for (int i = 0; i < s.model.springs.size(); ++i) {
     const double expected = s.model.springs.family[i] == SpringFamily::shear ? 0.01 * std::sqrt(2.0)
                             : s.model.springs.family[i] == SpringFamily::flex ? 0.02
-                                                                               : 0.01;
+                                                                              : 0.01;
     EXPECT_NEAR(s.model.springs.rest_length[i], expected, 1e-15);
   }
 }
@@ -57,7 +57,9 @@ TEST(Sheet, StiffnessOverrideKeepsFamilyRatios) {
 }
 
 TEST(Sheet, HoleRemovesParticlesAndSprings) {
-  const auto keep = [](double x, double y) { return !(x > 0.035 && x < 0.065 && y > 0.035 && y < 0.065); };
+  const auto keep = [](double x, double y) {
+    return !(x > 0.035 && x < 0.065 && y > 0.035 && y < 0.065);
+  };
   const Sheet full = build_sheet({0.1, 0.1, 11, 11}, SheetOptions{});
   const Sheet holed = build_sheet({0.1, 0.1, 11, 11}, SheetOptions{}, keep);
   EXPECT_EQ(holed.model.num_particles(), 121 - 9);

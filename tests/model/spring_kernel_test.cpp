@@ -22,8 +22,8 @@ TEST(SpringKernel, ForceIsStiffnessTimesExtensionAlongTheSpring) {
 }
 
 TEST(SpringKernel, CompressedSpringPushesApart) {
-  const Vec3 f = spring_force_on_a(Vec3::Zero(), Vec3(0.3, 0, 0), Vec3::Zero(), Vec3::Zero(),
-                                   0.5, 10.0, 0.0);
+  const Vec3 f =
+      spring_force_on_a(Vec3::Zero(), Vec3(0.3, 0, 0), Vec3::Zero(), Vec3::Zero(), 0.5, 10.0, 0.0);
   EXPECT_NEAR(f.x(), -2.0, 1e-12);
 }
 
@@ -39,8 +39,8 @@ TEST(SpringKernel, DampingActsOnlyOnRelativeVelocityAlongTheSpring) {
 }
 
 TEST(SpringKernel, ZeroLengthSpringExertsNoForce) {
-  const Vec3 f = spring_force_on_a(Vec3(1, 1, 1), Vec3(1, 1, 1), Vec3::Zero(), Vec3::Zero(), 0.2,
-                                   10.0, 0.0);
+  const Vec3 f =
+      spring_force_on_a(Vec3(1, 1, 1), Vec3(1, 1, 1), Vec3::Zero(), Vec3::Zero(), 0.2, 10.0, 0.0);
   EXPECT_EQ(f.norm(), 0.0);
 }
 

@@ -22,11 +22,11 @@ double catenary_parameter(double length, double half_span) {
 
 TEST(HangingChain, SagMatchesTheCatenaryWithinOnePercent) {
   const int segments = 40;
-  const double length = 1.2, half_span = 0.5;           // m
-  const double line_density = 0.1;                      // kg/m
+  const double length = 1.2, half_span = 0.5;  // m
+  const double line_density = 0.1;             // kg/m
   const double seg = length / segments;
   const double m = line_density * seg;
-  const double k = 1e4 / seg;                           // EA = 1e4 N: strain ~ 1e-4
+  const double k = 1e4 / seg;  // EA = 1e4 N: strain ~ 1e-4
 
   // Start on a parabola of the right arc length (not the answer), equally spaced by arc length:
   // tabulate the parabola finely, then pick points at equal cumulative length.

@@ -1,8 +1,8 @@
 // Spring-mass oscillator: period, convergence order and energy behaviour of every integrator.
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -84,7 +84,8 @@ TEST_P(IntegratorOrder, ErrorFallsWithTheMethodsOrderWhenTheStepHalves) {
 
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, IntegratorOrder,
                          ::testing::Values(OrderCase{"rk4", 16.0, 12.0, 20.0},
-                                           OrderCase{"symplectic_euler", 2.0, 1.6, 2.4}));
+                                           OrderCase{"symplectic_euler", 2.0, 1.6, 2.4}),
+                         [](const auto& p) { return std::string(p.param.method); });
 
 // Largest |E(t) - E(0)| over 20 undamped periods.
 double max_energy_drift(const std::string& method, double dt) {

@@ -36,7 +36,7 @@ class GridSheet {
   int ny() const { return spec_.ny; }
   double width() const { return spec_.width; }
   double height() const { return spec_.height; }
-  double hx() const { return spec_.width / (spec_.nx - 1); }  // node spacing along x (m)
+  double hx() const { return spec_.width / (spec_.nx - 1); }   // node spacing along x (m)
   double hy() const { return spec_.height / (spec_.ny - 1); }  // node spacing along y (m)
 
   // Particle index of node (i, j), or -1 when masked or outside the grid.

@@ -12,12 +12,12 @@ namespace membra {
 struct PreparedScene {
   Sheet sheet;
   State state;
-  int pinned = 0;           // pinned particles
-  double force_scale = 0.0; // k_stretch x grid spacing, N: the unit of the relative residual
+  int pinned = 0;            // pinned particles
+  double force_scale = 0.0;  // k_stretch x grid spacing, N: the unit of the relative residual
 };
 
 struct RunResult {
-  PreparedScene prepared;   // the sheet; prepared.state holds the final state
+  PreparedScene prepared;  // the sheet; prepared.state holds the final state
   SolveReport solve;
   double elastic_energy = 0.0;  // J
   double gravity_energy = 0.0;  // J

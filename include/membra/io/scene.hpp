@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "membra/geometry/grid_sheet.hpp"
+#include "membra/io/input_error.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/sheet.hpp"
 
@@ -17,21 +18,21 @@ namespace membra {
 
 // How to simulate: the paper's K, G, T, D and the run length.
 struct SimulationSpec {
-  std::string solver = "rk4";   // integrator name
-  double gravity = 9.81;        // G, m/s^2, acting along -z
-  double dt = 1e-4;             // T, s
-  double damping = 0.0;         // D, 1/s (force -D m v on every particle)
+  std::string solver = "rk4";  // integrator name
+  double gravity = 9.81;       // G, m/s^2, acting along -z
+  double dt = 1e-4;            // T, s
+  double damping = 0.0;        // D, 1/s (force -D m v on every particle)
   long steps = 10000;
-  double tolerance = 1e-6;      // relative to k_stretch x grid spacing
+  double tolerance = 1e-6;  // relative to k_stretch x grid spacing
   bool stop_when_converged = true;
 };
 
 struct Scene {
-  std::filesystem::path file;   // where it was read from (empty for in-memory scenes)
+  std::filesystem::path file;  // where it was read from (empty for in-memory scenes)
   std::string name;
   std::string description;
-  GridSpec grid;                // SI
-  SheetOptions sheet;           // material in SI, K override in N/m
+  GridSpec grid;       // SI
+  SheetOptions sheet;  // material in SI, K override in N/m
   std::vector<PinSpec> pins;
   SimulationSpec simulation;
 };

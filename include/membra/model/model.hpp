@@ -13,9 +13,9 @@ struct Model {
   std::vector<double> mass;      // kg, lumped
   std::vector<double> inv_mass;  // 1/kg; 0 means pinned
   Springs springs;
-  Points reference;              // paper position of each particle in the flat natural sheet, m
-  Vec3 gravity = Vec3::Zero();   // acceleration, m/s^2
-  double velocity_damping = 0.0; // D, 1/s: every particle feels -D m v
+  Points reference;               // paper position of each particle in the flat natural sheet, m
+  Vec3 gravity = Vec3::Zero();    // acceleration, m/s^2
+  double velocity_damping = 0.0;  // D, 1/s: every particle feels -D m v
 
   int num_particles() const { return static_cast<int>(mass.size()); }
   bool pinned(int p) const { return inv_mass[p] == 0.0; }

@@ -10,9 +10,9 @@ namespace membra {
 // Which particles to pin, in paper coordinates (m).
 struct PinSpec {
   enum class Kind { corners, edge, point, box } kind = Kind::corners;
-  std::string edge;                                      // left | right | bottom | top
-  Vec2 point = Vec2::Zero();                             // Kind::point: nearest particle
-  Vec2 box_min = Vec2::Zero(), box_max = Vec2::Zero();   // Kind::box: all particles inside
+  std::string edge;                                     // left | right | bottom | top
+  Vec2 point = Vec2::Zero();                            // Kind::point: nearest particle
+  Vec2 box_min = Vec2::Zero(), box_max = Vec2::Zero();  // Kind::box: all particles inside
 };
 
 // Pins the particles each spec selects and returns how many were pinned in all. A spec that

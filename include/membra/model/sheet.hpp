@@ -13,12 +13,12 @@ namespace membra {
 // How to build the lattice.
 struct SheetOptions {
   Material material = latex();
-  bool stretch = true;   // grid-edge springs
-  bool shear = true;     // both diagonals of each cell
-  bool flex = false;     // skip-one springs (the paper's "bend"; no linear bending stiffness)
-  double flex_ratio = 0.1;                 // k_flex / k_stretch when flex is on
-  std::optional<double> stretch_stiffness; // overrides k_stretch (N/m): the paper's K
-  double spring_damping = 0.0;             // c of every spring, N*s/m
+  bool stretch = true;      // grid-edge springs
+  bool shear = true;        // both diagonals of each cell
+  bool flex = false;        // skip-one springs (the paper's "bend"; no linear bending stiffness)
+  double flex_ratio = 0.1;  // k_flex / k_stretch when flex is on
+  std::optional<double> stretch_stiffness;  // overrides k_stretch (N/m): the paper's K
+  double spring_damping = 0.0;              // c of every spring, N*s/m
 };
 
 struct Sheet {

@@ -13,10 +13,10 @@ enum class SpringFamily : std::uint8_t { stretch, shear, flex, added };
 std::string_view to_string(SpringFamily f);
 
 struct Springs {
-  std::vector<int> a, b;             // particle indices
-  std::vector<double> rest_length;   // l0, m
-  std::vector<double> stiffness;     // k, N/m
-  std::vector<double> damping;       // c, N*s/m, acts on the relative velocity along the spring
+  std::vector<int> a, b;            // particle indices
+  std::vector<double> rest_length;  // l0, m
+  std::vector<double> stiffness;    // k, N/m
+  std::vector<double> damping;      // c, N*s/m, acts on the relative velocity along the spring
   std::vector<SpringFamily> family;
 
   int size() const { return static_cast<int>(a.size()); }

@@ -18,10 +18,10 @@ struct DynamicsOptions {
   double tolerance = 1e-6;
   double force_scale = 1.0;  // N, normally k_stretch x grid spacing
   bool stop_when_converged = true;
-  int check_every = 50;      // steps between residual and divergence checks
+  int check_every = 50;  // steps between residual and divergence checks
   int confirm_checks = 3;
-  std::function<void(const Progress&)> progress;             // called at every check
-  std::function<void(const State&, long step)> on_check;     // e.g. to record animation frames
+  std::function<void(const Progress&)> progress;          // called at every check
+  std::function<void(const State&, long step)> on_check;  // e.g. to record animation frames
 };
 
 // Runs up to `steps` steps from `state`. Never throws on divergence: the report says so and the
