@@ -36,8 +36,9 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                     {"shear", r.prepared.sheet.stiffness.shear / units::N_per_mm},
                     {"flex", r.prepared.sheet.stiffness.flex / units::N_per_mm}};
   if (!s.diverged) {
-    j["energy"] = r.elastic_energy + r.gravity_energy;
+    j["energy"] = r.elastic_energy + r.bending_energy + r.gravity_energy;
     j["energy_parts"] = {{"elastic", r.elastic_energy},
+                         {"bending", r.bending_energy},
                          {"gravity", r.gravity_energy},
                          {"kinetic", r.kinetic_energy}};
     j["shape"] = {{"height", r.shape.height / units::mm},
@@ -50,7 +51,7 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                 {"wall_seconds", "s"},
                 {"simulated_seconds", "s"},
                 {"stiffness", "N/mm"},
-                {"energy", "J (elastic + gravitational potential)"},
+                {"energy", "J (elastic + bending + gravitational potential)"},
                 {"energy_parts", "J"},
                 {"shape.height", "mm (extent normal to the best-fit plane)"},
                 {"shape.z_range", "mm"},

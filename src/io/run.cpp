@@ -24,7 +24,7 @@ PreparedScene prepare_scene(const Scene& scene) {
 }
 
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress) {
-  RunResult r{prepare_scene(scene), {}, 0.0, 0.0, 0.0, {}};
+  RunResult r{prepare_scene(scene), {}, 0.0, 0.0, 0.0, 0.0, {}};
   const Model& m = r.prepared.sheet.model;
   State& s = r.prepared.state;
   DynamicsOptions o;
@@ -38,6 +38,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   r.solve = run_dynamics(m, s, o);
   if (r.solve.diverged) return r;
   r.elastic_energy = elastic_energy(m, s.x);
+  r.bending_energy = bending_energy(m, s.x);
   r.gravity_energy = gravity_energy(m, s.x);
   r.kinetic_energy = kinetic_energy(m, s.v);
   r.shape = summarize_shape(s.x);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "membra/model/bend_kernel.hpp"
 #include "membra/model/spring_kernel.hpp"
 
 namespace membra {
@@ -21,6 +22,15 @@ void add_spring_forces(const Model& model, const Points& x, const Points* v, Poi
   }
 }
 
+void add_bending_forces(const Model& model, const Points& x, Points& f) {
+  const Bending& b = model.bending;
+  for (int i = 0; i < b.size(); ++i) {
+    const auto& v = b.v[i];
+    const BendEval e = bend_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), b.stiffness[i]);
+    for (int k = 0; k < 3; ++k) f.col(v[k]) -= e.grad[k];
+  }
+}
+
 void add_gravity(const Model& model, Points& f) {
   for (int p = 0; p < model.num_particles(); ++p) f.col(p) += model.mass[p] * model.gravity;
 }
@@ -31,6 +41,7 @@ void compute_forces(const Model& model, const Points& x, const Points& v, Points
   f.setZero(3, x.cols());
   const bool dynamic = v.cols() == x.cols();
   add_spring_forces(model, x, dynamic ? &v : nullptr, f);
+  add_bending_forces(model, x, f);
   add_gravity(model, f);
   if (dynamic && model.velocity_damping != 0.0) {
     for (int p = 0; p < model.num_particles(); ++p)
@@ -41,6 +52,7 @@ void compute_forces(const Model& model, const Points& x, const Points& v, Points
 void compute_static_forces(const Model& model, const Points& x, Points& f) {
   f.setZero(3, x.cols());
   add_spring_forces(model, x, nullptr, f);
+  add_bending_forces(model, x, f);
   add_gravity(model, f);
 }
 
@@ -52,6 +64,16 @@ double elastic_energy(const Model& model, const Points& x) {
   return e;
 }
 
+double bending_energy(const Model& model, const Points& x) {
+  const Bending& b = model.bending;
+  double e = 0.0;
+  for (int i = 0; i < b.size(); ++i) {
+    const auto& v = b.v[i];
+    e += bend_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), b.stiffness[i]).energy;
+  }
+  return e;
+}
+
 double gravity_energy(const Model& model, const Points& x) {
   double e = 0.0;
   for (int p = 0; p < model.num_particles(); ++p) e -= model.mass[p] * model.gravity.dot(x.col(p));
@@ -59,7 +81,7 @@ double gravity_energy(const Model& model, const Points& x) {
 }
 
 double potential_energy(const Model& model, const Points& x) {
-  return elastic_energy(model, x) + gravity_energy(model, x);
+  return elastic_energy(model, x) + bending_energy(model, x) + gravity_energy(model, x);
 }
 
 double kinetic_energy(const Model& model, const Points& v) {

@@ -48,6 +48,22 @@ void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const Lattic
   }
 }
 
+// Elements centred on every node with both neighbours present, along x, y and both diagonals.
+void add_bending_elements(const GridSheet& g, double d, Bending& out) {
+  constexpr int dirs[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+  for (int j = 0; j < g.ny(); ++j)
+    for (int i = 0; i < g.nx(); ++i) {
+      const int p = g.particle(i, j);
+      if (p < 0) continue;
+      for (const auto& dir : dirs) {
+        const int a = g.particle(i - dir[0], j - dir[1]), b = g.particle(i + dir[0], j + dir[1]);
+        if (a < 0 || b < 0) continue;
+        const double factor = (dir[0] != 0 && dir[1] != 0) ? 1.0 / 6.0 : 1.0 / 3.0;
+        out.add(a, p, b, factor * d, factor);
+      }
+    }
+}
+
 }  // namespace
 
 Sheet build_sheet(const GridSpec& spec, const SheetOptions& o, const NodeMask& keep) {
@@ -80,6 +96,7 @@ Sheet build_sheet(const GridSpec& spec, const SheetOptions& o, const NodeMask& k
   const LatticeStiffness k = lattice_stiffness(o);
   add_lattice_springs(grid, o, k, m);
   std::vector<Triangle> tris = triangulate(grid);
+  if (o.bending) add_bending_elements(grid, bending_stiffness(mat), m.bending);
   return Sheet{std::move(grid), std::move(m), std::move(tris), k};
 }
 

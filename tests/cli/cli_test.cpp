@@ -86,7 +86,7 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   EXPECT_EQ(report["converged"], r.solve.converged);
   // The run is deterministic: the same numbers to the last bit.
   EXPECT_EQ(report["residual"].get<double>(), r.solve.residual);
-  EXPECT_EQ(report["energy"].get<double>(), r.elastic_energy + r.gravity_energy);
+  EXPECT_EQ(report["energy"].get<double>(), r.elastic_energy + r.bending_energy + r.gravity_energy);
   EXPECT_EQ(report["shape"]["height"].get<double>(),
             r.shape.height / 1e-3);  // m to mm, as the report does
   // The sheet sags under gravity: height positive, energy negative (gravity wins).

@@ -1,6 +1,7 @@
 #pragma once
 // Basic vector types shared by every layer.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace membra {
 

@@ -19,7 +19,8 @@ struct PreparedScene {
 struct RunResult {
   PreparedScene prepared;  // the sheet; prepared.state holds the final state
   SolveReport solve;
-  double elastic_energy = 0.0;  // J
+  double elastic_energy = 0.0;  // J, springs
+  double bending_energy = 0.0;  // J
   double gravity_energy = 0.0;  // J
   double kinetic_energy = 0.0;  // J
   ShapeSummary shape;

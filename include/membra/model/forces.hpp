@@ -5,18 +5,22 @@
 namespace membra {
 
 // Computes the net force (N) on every particle into f (resized to 3 x N): springs (elastic and
-// damping along the spring), gravity m g, and global velocity damping -D m v. Pinned particles
-// get a force too; integrators ignore it. Pass an empty v for a static evaluation (no damping).
+// damping along the spring), bending elements, gravity m g, and global velocity damping -D m v.
+// Pinned particles get a force too; integrators ignore it. Pass an empty v for a static evaluation
+// (no damping).
 void compute_forces(const Model& model, const Points& x, const Points& v, Points& f);
 
-// Static force (springs' elastic part and gravity only): what must vanish at equilibrium.
+// Static force (springs' elastic part, bending and gravity): what must vanish at equilibrium.
 void compute_static_forces(const Model& model, const Points& x, Points& f);
 
-// Elastic energy of all springs (J).
+// Elastic (stretching) energy of all springs (J).
 double elastic_energy(const Model& model, const Points& x);
+// Bending energy of all bending elements (J).
+double bending_energy(const Model& model, const Points& x);
 // Gravitational potential energy sum m (-g . x) (J), zero at x = 0.
 double gravity_energy(const Model& model, const Points& x);
-// Potential energy: elastic + gravitational (J). Its negative gradient is the static force.
+// Potential energy: elastic + bending + gravitational (J). Its negative gradient is the static
+// force.
 double potential_energy(const Model& model, const Points& x);
 // Kinetic energy of the free particles (J).
 double kinetic_energy(const Model& model, const Points& v);

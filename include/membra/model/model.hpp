@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "membra/geometry/vec.hpp"
+#include "membra/model/bending.hpp"
 #include "membra/model/springs.hpp"
 
 namespace membra {
@@ -13,6 +14,7 @@ struct Model {
   std::vector<double> mass;      // kg, lumped
   std::vector<double> inv_mass;  // 1/kg; 0 means pinned
   Springs springs;
+  Bending bending;                // bending elements; empty when the sheet has none
   Points reference;               // paper position of each particle in the flat natural sheet, m
   Vec3 gravity = Vec3::Zero();    // acceleration, m/s^2
   double velocity_damping = 0.0;  // D, 1/s: every particle feels -D m v

@@ -16,6 +16,7 @@ struct SheetOptions {
   bool stretch = true;      // grid-edge springs
   bool shear = true;        // both diagonals of each cell
   bool flex = false;        // skip-one springs (the paper's "bend"; no linear bending stiffness)
+  bool bending = true;      // plate bending with D = E t^3 / (12 (1 - nu^2)), see bending.hpp
   double flex_ratio = 0.1;  // k_flex / k_stretch when flex is on
   std::optional<double> stretch_stiffness;  // overrides k_stretch (N/m): the paper's K
   double spring_damping = 0.0;              // c of every spring, N*s/m
@@ -29,8 +30,9 @@ struct Sheet {
 };
 
 // Builds the sheet: lumped masses (area x thickness x density, a quarter of each active cell to
-// each of its corners), the chosen spring families at rest in the flat grid, no pins, no
-// gravity. Nodes the mask removes, and nodes left in no active cell, are dropped.
+// each of its corners), the chosen spring families at rest in the flat grid, bending elements
+// (unless switched off), no pins, no gravity. Nodes the mask removes, and nodes left in no active
+// cell, are dropped.
 Sheet build_sheet(const GridSpec& spec, const SheetOptions& options, const NodeMask& keep = {});
 
 }  // namespace membra

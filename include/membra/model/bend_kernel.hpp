@@ -1,0 +1,41 @@
+#pragma once
+// One bending element: three consecutive particles x0, x1, x2 along a grid line or diagonal.
+// With a = x1 - x0, b = x2 - x1 and psi the turning angle between them, the energy is
+//   E = 4 c tan^2(psi / 2) = 4 c (|a|^2 |b|^2 - (a.b)^2) / (|a||b| + a.b)^2,
+// which is c psi^2 for small angles. 2 tan(psi/2) is the discrete curvature binormal of discrete
+// elastic rods (Bergou et al. 2008); written with dot products only, it is smooth at psi = 0
+// (a straight line) and cheap. It grows without bound as the line folds back (psi -> pi).
+#include <array>
+
+#include "membra/geometry/vec.hpp"
+
+namespace membra {
+
+struct BendEval {
+  double energy = 0.0;
+  std::array<Vec3, 3> grad;  // dE / dx_i
+};
+
+inline BendEval bend_eval(const Vec3& x0, const Vec3& x1, const Vec3& x2, double c) {
+  BendEval r;
+  const Vec3 a = x1 - x0, b = x2 - x1;
+  const double aa = a.squaredNorm(), bb = b.squaredNorm(), ab = a.dot(b);
+  const double la = std::sqrt(aa), lb = std::sqrt(bb);
+  const double d = la * lb + ab;
+  if (la <= 0.0 || lb <= 0.0 || d <= 0.0) {  // coincident particles or folded flat back
+    for (auto& g : r.grad) g.setZero();
+    return r;
+  }
+  const double p = aa * bb - ab * ab;  // |a x b|^2
+  const double inv_d2 = 1.0 / (d * d);
+  r.energy = 4.0 * c * p * inv_d2;
+  const double q = 2.0 * p * inv_d2 / d;
+  const Vec3 g_a = 4.0 * c * ((2.0 * bb * a - 2.0 * ab * b) * inv_d2 - q * (lb / la * a + b));
+  const Vec3 g_b = 4.0 * c * ((2.0 * aa * b - 2.0 * ab * a) * inv_d2 - q * (la / lb * b + a));
+  r.grad[0] = -g_a;
+  r.grad[1] = g_a - g_b;
+  r.grad[2] = g_b;
+  return r;
+}
+
+}  // namespace membra
