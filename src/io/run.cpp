@@ -3,6 +3,7 @@
 #include "membra/io/input_error.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/solve/dynamics.hpp"
+#include "membra/solve/static_solver.hpp"
 
 namespace membra {
 
@@ -27,15 +28,24 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   RunResult r{prepare_scene(scene), {}, 0.0, 0.0, 0.0, 0.0, {}};
   const Model& m = r.prepared.sheet.model;
   State& s = r.prepared.state;
-  DynamicsOptions o;
-  o.method = scene.simulation.solver;
-  o.dt = scene.simulation.dt;
-  o.steps = scene.simulation.steps;
-  o.tolerance = scene.simulation.tolerance;
-  o.force_scale = r.prepared.force_scale;
-  o.stop_when_converged = scene.simulation.stop_when_converged;
-  o.progress = progress;
-  r.solve = run_dynamics(m, s, o);
+  if (scene.simulation.solver == "static") {
+    StaticOptions o;
+    o.tolerance = scene.simulation.tolerance;
+    o.force_scale = r.prepared.force_scale;
+    o.max_iterations = scene.simulation.max_iterations;
+    o.progress = progress;
+    r.solve = solve_static(m, s, o);
+  } else {
+    DynamicsOptions o;
+    o.method = scene.simulation.solver;
+    o.dt = scene.simulation.dt;
+    o.steps = scene.simulation.steps;
+    o.tolerance = scene.simulation.tolerance;
+    o.force_scale = r.prepared.force_scale;
+    o.stop_when_converged = scene.simulation.stop_when_converged;
+    o.progress = progress;
+    r.solve = run_dynamics(m, s, o);
+  }
   if (r.solve.diverged) return r;
   r.elastic_energy = elastic_energy(m, s.x);
   r.bending_energy = bending_energy(m, s.x);

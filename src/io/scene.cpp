@@ -21,7 +21,8 @@ const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "
 const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
 const std::vector<std::string_view> kSimulationKeys = {
-    "solver", "K", "G", "T", "D", "spring_damping", "steps", "tolerance", "stop_when_converged"};
+    "solver", "K", "G", "T", "D", "spring_damping", "steps", "max_iterations", "tolerance",
+    "stop_when_converged"};
 
 // Largest grid we accept; the robustness issue adds a memory-based limit.
 constexpr long kMaxNodesPerSide = 4096;
@@ -152,6 +153,7 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   if (!top.has("simulation")) return;
   const JsonObject s = top.object("simulation", kSimulationKeys);
   std::vector<std::string_view> solvers = integrator_names();
+  solvers.insert(solvers.begin(), "static");
   sim.solver = s.string("solver", sim.solver, solvers);
   if (s.has("K"))
     scene.sheet.stretch_stiffness =
@@ -162,6 +164,7 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   scene.sheet.spring_damping =
       s.number("spring_damping", 0.0, Bounds::non_negative()) * units::N_per_mm;
   sim.steps = s.integer("steps", sim.steps, 0, 1'000'000'000L);
+  sim.max_iterations = s.integer("max_iterations", sim.max_iterations, 0, 1'000'000'000L);
   sim.tolerance = s.number("tolerance", sim.tolerance, Bounds{0.0, 1.0, true});
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
 }

@@ -22,7 +22,8 @@ struct SimulationSpec {
   double gravity = 9.81;       // G, m/s^2, acting along -z
   double dt = 1e-4;            // T, s
   double damping = 0.0;        // D, 1/s (force -D m v on every particle)
-  long steps = 10000;
+  long steps = 10000;           // time steps of a dynamic solver
+  long max_iterations = 500000; // iterations of the static solver
   double tolerance = 1e-6;  // relative to k_stretch x grid spacing
   bool stop_when_converged = true;
 };

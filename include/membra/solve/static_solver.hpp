@@ -1,0 +1,28 @@
+#pragma once
+// Static equilibrium: FIRE (Bitzek et al. 2006, "Structural relaxation made simple"; FIRE 2.0
+// details from Guenole et al. 2020) on fictitious masses scaled to each particle's stiffness,
+// so one time step suits the whole sheet however stiff the resin is next to the latex.
+#include <functional>
+
+#include "membra/model/model.hpp"
+#include "membra/solve/solve_report.hpp"
+
+namespace membra {
+
+struct StaticOptions {
+  double tolerance = 1e-6;     // converged when max |static force| <= tolerance x force_scale
+  double force_scale = 1.0;    // N, normally k_stretch x grid spacing
+  long max_iterations = 500000;
+  int check_every = 25;        // iterations between convergence checks and progress calls
+  std::function<void(const Progress&)> progress;
+};
+
+// Moves the free particles of `state` to a nearby equilibrium (velocities are left zero).
+// Never throws on divergence: the report says so.
+SolveReport solve_static(const Model& model, State& state, const StaticOptions& options);
+
+// Fictitious masses (N/m): a Gershgorin bound of each particle's stiffness from its springs and
+// bending elements at positions x, so that the scaled system's frequencies are at most ~sqrt(2).
+std::vector<double> stiffness_scaled_masses(const Model& model, const Points& x);
+
+}  // namespace membra
