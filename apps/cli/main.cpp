@@ -25,8 +25,8 @@ int cmd_validate(const std::string& scene_file, const std::vector<std::string>& 
   try {
     const membra::PreparedScene p = membra::prepare_scene(scene);
     if (!quiet)
-      std::cout << scene_file << ": valid (" << p.sheet.model.num_particles() << " particles, "
-                << p.sheet.model.springs.size() << " springs, " << p.pinned << " pinned)\n";
+      std::cout << scene_file << ": valid (" << p.membrane.sheet.model.num_particles() << " particles, "
+                << p.membrane.sheet.model.springs.size() << " springs, " << p.pinned << " pinned)\n";
   } catch (const membra::InputError& e) {
     throw membra::InputError(scene_file + ": " + e.where(), e.detail());
   }
@@ -58,7 +58,7 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
     return kDiverged;
   }
   out.add("final.obj", [&](std::ostream& os) {
-    membra::write_obj(os, r.prepared.state.x, r.prepared.sheet.triangles);
+    membra::write_obj(os, r.prepared.membrane.state.x, r.prepared.membrane.sheet.triangles);
   });
   out.commit();
   if (!quiet) {

@@ -13,7 +13,7 @@ nlohmann::json mm3(const Vec3& v) {
 
 nlohmann::json make_report(const Scene& scene, const RunResult& r) {
   const SolveReport& s = r.solve;
-  const Model& m = r.prepared.sheet.model;
+  const Model& m = r.prepared.membrane.sheet.model;
   nlohmann::json j;
   j["membra_version"] = kVersion;
   j["scene"] = scene.name;
@@ -27,14 +27,24 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
   j["iterations"] = s.iterations;
   j["force_passes"] = s.force_passes;
   j["wall_seconds"] = s.wall_seconds;
-  j["simulated_seconds"] = r.prepared.state.time;
+  j["simulated_seconds"] = r.prepared.membrane.state.time;
   j["particles"] = m.num_particles();
   j["springs"] = m.springs.size();
-  j["triangles"] = r.prepared.sheet.triangles.size();
+  j["triangles"] = r.prepared.membrane.sheet.triangles.size();
   j["pinned"] = r.prepared.pinned;
-  j["stiffness"] = {{"stretch", r.prepared.sheet.stiffness.stretch / units::N_per_mm},
-                    {"shear", r.prepared.sheet.stiffness.shear / units::N_per_mm},
-                    {"flex", r.prepared.sheet.stiffness.flex / units::N_per_mm}};
+  j["steps"] = nlohmann::json::array();
+  for (const StepReport& step : r.steps) {
+    nlohmann::json js = {{"step", step.name},
+                         {"iterations", step.solve.iterations},
+                         {"residual_relative", step.solve.residual_relative},
+                         {"converged", step.solve.converged},
+                         {"wall_seconds", step.solve.wall_seconds}};
+    if (step.name == "impregnate") js = {{"step", step.name}, {"resin_springs", step.resin_springs}};
+    j["steps"].push_back(js);
+  }
+  j["stiffness"] = {{"stretch", r.prepared.membrane.sheet.stiffness.stretch / units::N_per_mm},
+                    {"shear", r.prepared.membrane.sheet.stiffness.shear / units::N_per_mm},
+                    {"flex", r.prepared.membrane.sheet.stiffness.flex / units::N_per_mm}};
   if (!s.diverged) {
     j["energy"] = r.elastic_energy + r.bending_energy + r.gravity_energy;
     j["energy_parts"] = {{"elastic", r.elastic_energy},

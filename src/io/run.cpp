@@ -2,51 +2,134 @@
 
 #include "membra/io/input_error.hpp"
 #include "membra/model/forces.hpp"
+#include "membra/model/pins.hpp"
 #include "membra/solve/dynamics.hpp"
 #include "membra/solve/static_solver.hpp"
 
 namespace membra {
+namespace {
+
+// Solves for equilibrium with the scene's solver: FIRE for "static", damped time stepping
+// otherwise.
+SolveReport solve(const Scene& scene, const PreparedScene& p, State& s, const std::string& stage,
+                  const std::function<void(const Progress&)>& progress) {
+  auto staged = [&](const Progress& pr) {
+    if (!progress) return;
+    Progress q = pr;
+    q.stage = stage;
+    progress(q);
+  };
+  const Model& m = p.membrane.sheet.model;
+  if (scene.simulation.solver == "static") {
+    StaticOptions o;
+    o.tolerance = scene.simulation.tolerance;
+    o.force_scale = p.force_scale;
+    o.max_iterations = scene.simulation.max_iterations;
+    o.progress = staged;
+    return solve_static(m, s, o);
+  }
+  DynamicsOptions o;
+  o.method = scene.simulation.solver;
+  o.dt = scene.simulation.dt;
+  o.steps = scene.simulation.steps;
+  o.tolerance = scene.simulation.tolerance;
+  o.force_scale = p.force_scale;
+  o.stop_when_converged = scene.simulation.stop_when_converged;
+  o.progress = staged;
+  return run_dynamics(m, s, o);
+}
+
+void accumulate(SolveReport& total, const SolveReport& r) {
+  total.iterations += r.iterations;
+  total.force_passes += r.force_passes;
+  total.wall_seconds += r.wall_seconds;
+  total.residual = r.residual;
+  total.residual_relative = r.residual_relative;
+  total.converged = r.converged;
+  total.diverged = r.diverged;
+  total.message = r.message;
+}
+
+int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScene& p) {
+  try {
+    return apply_pins(pins, p.membrane.sheet.grid, p.membrane.sheet.model);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(where, e.what());
+  }
+}
+
+}  // namespace
 
 PreparedScene prepare_scene(const Scene& scene) {
-  PreparedScene p{build_sheet(scene.grid, scene.sheet), State{}, 0, 0.0};
-  try {
-    p.pinned = apply_pins(scene.pins, p.sheet.grid, p.sheet.model);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("/pins", e.what());
-  }
-  Model& m = p.sheet.model;
+  PreparedScene p{make_membrane(build_sheet(scene.grid, scene.sheet)), 0, 0.0};
+  p.pinned = pin(scene.pins, "/pins", p);
+  Model& m = p.membrane.sheet.model;
   m.gravity = Vec3(0.0, 0.0, -scene.simulation.gravity);
   m.velocity_damping = scene.simulation.damping;
-  p.state = State::at_rest(m);
-  const double k =
-      p.sheet.stiffness.stretch > 0.0 ? p.sheet.stiffness.stretch : p.sheet.stiffness.shear;
-  p.force_scale = k * p.sheet.grid.hx();
+  const LatticeStiffness& k = p.membrane.sheet.stiffness;
+  p.force_scale = (k.stretch > 0.0 ? k.stretch : k.shear) * p.membrane.sheet.grid.hx();
   return p;
 }
 
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress) {
-  RunResult r{prepare_scene(scene), {}, 0.0, 0.0, 0.0, 0.0, {}};
-  const Model& m = r.prepared.sheet.model;
-  State& s = r.prepared.state;
-  if (scene.simulation.solver == "static") {
-    StaticOptions o;
-    o.tolerance = scene.simulation.tolerance;
-    o.force_scale = r.prepared.force_scale;
-    o.max_iterations = scene.simulation.max_iterations;
-    o.progress = progress;
-    r.solve = solve_static(m, s, o);
-  } else {
-    DynamicsOptions o;
-    o.method = scene.simulation.solver;
-    o.dt = scene.simulation.dt;
-    o.steps = scene.simulation.steps;
-    o.tolerance = scene.simulation.tolerance;
-    o.force_scale = r.prepared.force_scale;
-    o.stop_when_converged = scene.simulation.stop_when_converged;
-    o.progress = progress;
-    r.solve = run_dynamics(m, s, o);
+  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}};
+  Membrane& mem = r.prepared.membrane;
+  State& s = mem.state;
+  auto record = [&](StepReport step) {
+    accumulate(r.solve, step.solve);
+    r.steps.push_back(std::move(step));
+    return !r.solve.diverged;
+  };
+
+  if (scene.protocol.empty()) {
+    record({"solve", solve(scene, r.prepared, s, "solve", progress), 0});
+  }
+  for (const ProtocolStep& step : scene.protocol) {
+    bool ok = true;
+    switch (step.kind) {
+      case ProtocolStep::Kind::stretch:
+        stretch_frame(mem, step.lambda.x(), step.lambda.y());
+        ok = record({"stretch", solve(scene, r.prepared, s, "stretch", progress), 0});
+        break;
+      case ProtocolStep::Kind::impregnate: {
+        const int n = impregnate(mem, *step.pattern, step.resin, step.resin_side);
+        if (n == 0)
+          throw InputError(step.pointer + "/pattern",
+                           "the pattern covers no spring of the sheet (is it between grid nodes, "
+                           "or outside the stretched sheet?)");
+        ok = record({"impregnate", {}, n});
+        break;
+      }
+      case ProtocolStep::Kind::release: {
+        perturb(mem, step.perturbation, step.seed);
+        begin_release(mem);
+        if (scene.simulation.solver == "static") {
+          // Quasi-static path: the latex returns to its natural length in increments.
+          StepReport rep{"release", {}, 0};
+          for (int k = 1; k <= step.increments && !rep.solve.diverged; ++k) {
+            set_release_level(mem, 1.0 - static_cast<double>(k) / step.increments);
+            const std::string stage =
+                "release " + std::to_string(k) + "/" + std::to_string(step.increments);
+            accumulate(rep.solve, solve(scene, r.prepared, s, stage, progress));
+          }
+          ok = record(rep);
+        } else {
+          // Dynamics from the stretched state, as the paper's tool does.
+          set_release_level(mem, 0.0);
+          ok = record({"release", solve(scene, r.prepared, s, "release", progress), 0});
+        }
+        break;
+      }
+      case ProtocolStep::Kind::load:
+        if (step.gravity) mem.sheet.model.gravity = Vec3(0.0, 0.0, -*step.gravity);
+        r.prepared.pinned += pin(step.pins, step.pointer + "/pins", r.prepared);
+        ok = record({"load", solve(scene, r.prepared, s, "load", progress), 0});
+        break;
+    }
+    if (!ok) break;
   }
   if (r.solve.diverged) return r;
+  const Model& m = mem.sheet.model;
   r.elastic_energy = elastic_energy(m, s.x);
   r.bending_energy = bending_energy(m, s.x);
   r.gravity_energy = gravity_energy(m, s.x);

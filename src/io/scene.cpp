@@ -3,8 +3,10 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "membra/io/json_reader.hpp"
+#include "membra/io/pattern_reader.hpp"
 #include "membra/model/units.hpp"
 #include "membra/solve/integrator.hpp"
 
@@ -15,8 +17,13 @@ using nlohmann::json;
 
 // Known keys, one list per object; scene_known_keys() exposes them for the schema test.
 const std::vector<std::string_view> kTopKeys = {"$schema",   "name", "description", "sheet",
-                                                "materials", "pins", "simulation"};
-const std::vector<std::string_view> kSheetKeys = {"size", "resolution", "material", "springs"};
+                                                "materials", "pins", "simulation",  "protocol"};
+const std::vector<std::string_view> kSheetKeys = {"size", "resolution", "material", "springs",
+                                                  "bending"};
+const std::vector<std::string_view> kStretchKeys = {"step", "lambda"};
+const std::vector<std::string_view> kImpregnateKeys = {"step", "pattern", "material", "resin_side"};
+const std::vector<std::string_view> kReleaseKeys = {"step", "increments", "perturbation", "seed"};
+const std::vector<std::string_view> kLoadKeys = {"step", "gravity", "pins"};
 const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
 const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
@@ -97,6 +104,7 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
                                                     "': define it under /materials or use a preset "
                                                     "(latex, epoxy)");
   scene.sheet.material = it->second;
+  scene.sheet.bending = sheet.boolean("bending", true);
   if (sheet.has("springs")) {
     const JsonObject springs = sheet.object("springs", kSpringKeys);
     scene.sheet.stretch = springs.boolean("stretch", true);
@@ -108,14 +116,15 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
   }
 }
 
-void parse_pins(const JsonObject& top, const Scene& scene, std::vector<PinSpec>& pins) {
-  if (!top.has("pins")) return;
-  const auto& arr = top.at("pins");
-  if (!arr.is_array()) throw InputError("/pins", "expected an array, got " + json_type_name(arr));
+void parse_pins(const JsonObject& parent, const Scene& scene, std::vector<PinSpec>& pins) {
+  if (!parent.has("pins")) return;
+  const auto& arr = parent.at("pins");
+  const std::string base = parent.pointer("pins");
+  if (!arr.is_array()) throw InputError(base, "expected an array, got " + json_type_name(arr));
   const Bounds in_x = Bounds::between(0.0, scene.grid.width / units::mm);
   const Bounds in_y = Bounds::between(0.0, scene.grid.height / units::mm);
   for (size_t i = 0; i < arr.size(); ++i) {
-    const JsonObject p(arr[i], "/pins/" + std::to_string(i), kPinKeys);
+    const JsonObject p(arr[i], base + "/" + std::to_string(i), kPinKeys);
     int given = 0;
     for (auto k : kPinKeys) given += p.has(k) ? 1 : 0;
     if (given != 1) throw InputError(p.pointer(), "give exactly one of corners, edge, point, box");
@@ -169,13 +178,88 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
 }
 
+// The steps, checked in order: the frame size a pattern must fit depends on the stretches
+// before it, and a static solve of a free sheet under gravity has no equilibrium.
+void parse_protocol(const JsonObject& top, const json& j, const std::map<std::string, Material>& materials,
+                    const std::filesystem::path& base_dir, Scene& scene) {
+  if (!top.has("protocol")) return;
+  const auto& arr = top.at("protocol");
+  if (!arr.is_array()) throw InputError("/protocol", "expected an array of steps");
+  (void)j;
+  Vec2 stretch(1.0, 1.0);
+  bool pinned = !scene.pins.empty(), framed = false;
+  double gravity = scene.simulation.gravity;
+  const bool is_static = scene.simulation.solver == "static";
+  auto check_equilibrium = [&](const std::string& ptr) {
+    if (is_static && !pinned && !framed && gravity != 0.0)
+      throw InputError(ptr, "a free sheet under gravity has no static equilibrium: pin it (a load "
+                            "step with pins) or set simulation.G (or the load step's gravity) to 0");
+  };
+  for (size_t i = 0; i < arr.size(); ++i) {
+    const std::string ptr = "/protocol/" + std::to_string(i);
+    if (!arr[i].is_object() || !arr[i].contains("step"))
+      throw InputError(ptr, "expected an object with a \"step\" key (stretch, impregnate, release, load)");
+    const JsonObject head(arr[i], ptr, {"step", "lambda", "pattern", "material", "resin_side",
+                                        "increments", "perturbation", "seed", "gravity", "pins"});
+    const std::string kind = head.string("step", std::nullopt, {"stretch", "impregnate", "release", "load"});
+    ProtocolStep step;
+    step.pointer = ptr;
+    if (kind == "stretch") {
+      const JsonObject o(arr[i], ptr, kStretchKeys);
+      step.kind = ProtocolStep::Kind::stretch;
+      const auto l = o.numbers("lambda", 2, Bounds{0.0, 10.0, true});
+      step.lambda = Vec2(l[0], l[1]);
+      stretch = stretch.cwiseProduct(step.lambda);
+      framed = true;
+    } else if (kind == "impregnate") {
+      const JsonObject o(arr[i], ptr, kImpregnateKeys);
+      step.kind = ProtocolStep::Kind::impregnate;
+      const Vec2 frame(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height);
+      step.pattern_json = o.at("pattern");
+      step.pattern = read_pattern(o.at("pattern"), o.pointer("pattern"), base_dir, frame);
+      const Box2 inside = step.pattern->bounds().intersect({Vec2::Zero(), frame});
+      if (inside.empty() || inside.max.x() <= inside.min.x() || inside.max.y() <= inside.min.y()) {
+        std::ostringstream msg;
+        msg << "the pattern lies outside the frame [0, " << frame.x() / units::mm << "] x [0, "
+            << frame.y() / units::mm << "] mm (frame coordinates: the stretched sheet)";
+        throw InputError(o.pointer("pattern"), msg.str());
+      }
+      const std::string mat = o.string("material", "epoxy");
+      const auto it = materials.find(mat);
+      if (it == materials.end())
+        throw InputError(o.pointer("material"), "unknown material '" + mat + "'");
+      step.resin = it->second;
+      step.resin_side = o.string("resin_side", "top", {"top", "bottom"}) == "top" ? 1 : -1;
+    } else if (kind == "release") {
+      const JsonObject o(arr[i], ptr, kReleaseKeys);
+      step.kind = ProtocolStep::Kind::release;
+      step.increments = static_cast<int>(o.integer("increments", step.increments, 1, 100000));
+      step.perturbation = o.number("perturbation", step.perturbation / units::mm,
+                                   Bounds::non_negative()) * units::mm;
+      step.seed = static_cast<std::uint64_t>(o.integer("seed", 1, 0, 2'000'000'000L));
+      if (!framed) throw InputError(ptr, "release needs a stretch step before it");
+      framed = false;
+      check_equilibrium(ptr);
+    } else {
+      const JsonObject o(arr[i], ptr, kLoadKeys);
+      step.kind = ProtocolStep::Kind::load;
+      if (o.has("gravity")) step.gravity = o.number("gravity", std::nullopt, Bounds::between(-1e4, 1e4));
+      if (step.gravity) gravity = *step.gravity;
+      parse_pins(o, scene, step.pins);
+      pinned = pinned || !step.pins.empty();
+      check_equilibrium(ptr);
+    }
+    scene.protocol.push_back(std::move(step));
+  }
+}
+
 std::vector<std::string> to_strings(const std::vector<std::string_view>& v) {
   return {v.begin(), v.end()};
 }
 
 }  // namespace
 
-Scene parse_scene(const json& j) {
+Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   Scene scene;
   const JsonObject top(j, "", kTopKeys);
   scene.name = top.string("name", "untitled");
@@ -184,6 +268,11 @@ Scene parse_scene(const json& j) {
   parse_sheet(top, materials, scene);
   parse_pins(top, scene, scene.pins);
   parse_simulation(top, scene);
+  parse_protocol(top, j, materials, base_dir, scene);
+  if (scene.protocol.empty() && scene.simulation.solver == "static" && scene.pins.empty() &&
+      scene.simulation.gravity != 0.0)
+    throw InputError("/simulation/G", "a free sheet under gravity has no static equilibrium: add "
+                                      "pins or set G to 0");
   return scene;
 }
 
@@ -228,7 +317,7 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
     throw InputError(name + ": " + e.where(), e.detail());
   }
   try {
-    Scene s = parse_scene(j);
+    Scene s = parse_scene(j, file.parent_path());
     s.file = file;
     return s;
   } catch (const InputError& e) {
@@ -242,7 +331,12 @@ std::map<std::string, std::vector<std::string>> scene_known_keys() {
           {"/sheet/springs", to_strings(kSpringKeys)},
           {"/materials/*", to_strings(kMaterialKeys)},
           {"/pins/*", to_strings(kPinKeys)},
-          {"/simulation", to_strings(kSimulationKeys)}};
+          {"/simulation", to_strings(kSimulationKeys)},
+          {"/protocol/*stretch", to_strings(kStretchKeys)},
+          {"/protocol/*impregnate", to_strings(kImpregnateKeys)},
+          {"/protocol/*release", to_strings(kReleaseKeys)},
+          {"/protocol/*load", to_strings(kLoadKeys)},
+          {"/protocol/*load/pins/*", to_strings(kPinKeys)}};
 }
 
 }  // namespace membra

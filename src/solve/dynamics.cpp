@@ -57,7 +57,7 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
     r.residual_relative = r.residual / o.force_scale;
     small_in_a_row = r.residual_relative <= o.tolerance ? small_in_a_row + 1 : 0;
     if (o.on_check) o.on_check(state, step);
-    if (o.progress) o.progress({step, o.steps, r.residual_relative, seconds()});
+    if (o.progress) o.progress({"", step, o.steps, r.residual_relative, seconds()});
     if (o.stop_when_converged && small_in_a_row >= o.confirm_checks) break;
   }
   if (r.iterations == 0) {

@@ -103,7 +103,7 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
       r.wall_seconds = seconds();
       return r;
     }
-    if (o.progress) o.progress({it, o.max_iterations, r.residual_relative, seconds()});
+    if (o.progress) o.progress({"", it, o.max_iterations, r.residual_relative, seconds()});
     if (r.residual_relative <= o.tolerance) break;
   }
   if (r.iterations == 0) {

@@ -80,8 +80,8 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   const Scene scene = load_scene(kExp1, kSmall);
   const RunResult r = run_scene(scene);
   EXPECT_EQ(report["particles"], 121);
-  EXPECT_EQ(report["particles"], r.prepared.sheet.model.num_particles());
-  EXPECT_EQ(report["springs"], r.prepared.sheet.model.springs.size());
+  EXPECT_EQ(report["particles"], r.prepared.membrane.sheet.model.num_particles());
+  EXPECT_EQ(report["springs"], r.prepared.membrane.sheet.model.springs.size());
   EXPECT_EQ(report["iterations"], r.solve.iterations);
   EXPECT_EQ(report["converged"], r.solve.converged);
   // The run is deterministic: the same numbers to the last bit.

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "membra/io/pattern_reader.hpp"
 #include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
 
@@ -25,9 +26,13 @@ const json& schema_at(const json& schema, const std::string& pattern) {
   while (start <= pattern.size() && !pattern.empty()) {
     const size_t slash = std::min(pattern.find('/', start), pattern.size());
     const std::string part = pattern.substr(start, slash - start);
-    if (part == "*")
+    if (part == "*") {
       node = node->contains("items") ? &(*node)["items"] : &(*node)["additionalProperties"];
-    else
+    } else if (part[0] == '*') {  // "*kind": the oneOf item whose "step" is kind
+      const json* items = &(*node)["items"]["oneOf"];
+      for (const auto& alt : *items)
+        if (alt["properties"]["step"]["const"] == part.substr(1)) node = &alt;
+    } else
       node = &(*node)["properties"][part];
     start = slash + 1;
   }
@@ -44,6 +49,17 @@ TEST(Schema, KeysMatchTheParser) {
     for (const auto& [k, v] : node["properties"].items()) in_schema.insert(k);
     EXPECT_EQ(in_schema, std::set<std::string>(keys.begin(), keys.end())) << pattern;
     EXPECT_EQ(node.value("additionalProperties", true), false) << pattern;
+  }
+}
+
+TEST(Schema, PatternKeysMatchTheParser) {
+  const json schema = load_json(std::filesystem::path(MEMBRA_SOURCE_DIR) / "docs/scene.schema.json");
+  const json& pattern = schema["$defs"]["pattern"];
+  for (const auto& [kind, keys] : pattern_known_keys()) {
+    const json& node = kind.empty() ? pattern : pattern["properties"][kind];
+    std::set<std::string> in_schema;
+    for (const auto& [k, v] : node["properties"].items()) in_schema.insert(k);
+    EXPECT_EQ(in_schema, std::set<std::string>(keys.begin(), keys.end())) << kind;
   }
 }
 

@@ -25,6 +25,8 @@ class GridSheet {
  public:
   // Builds the grid; nodes for which `keep` returns false are masked out. Throws
   // std::invalid_argument for a non-positive size or fewer than 2 nodes per side.
+  // An empty grid (no nodes), to be assigned later.
+  GridSheet() = default;
   explicit GridSheet(const GridSpec& spec, const NodeMask& keep = {});
   // Builds the grid keeping node (i, j) where keep_node[j * nx + i] is true.
   GridSheet(const GridSpec& spec, const std::vector<bool>& keep_node);

@@ -1,24 +1,35 @@
 #pragma once
-// Running a scene: build the sheet, apply pins and loads, solve, summarise.
+// Running a scene: build the membrane, apply pins and loads, carry out the protocol (solving for
+// equilibrium after every step that changes it), summarise.
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "membra/io/scene.hpp"
 #include "membra/measure/shape.hpp"
+#include "membra/model/membrane.hpp"
 #include "membra/solve/solve_report.hpp"
 
 namespace membra {
 
-// The model a scene describes, ready to solve, and its initial state.
+// The membrane a scene describes, ready to run.
 struct PreparedScene {
-  Sheet sheet;
-  State state;
-  int pinned = 0;            // pinned particles
+  Membrane membrane;
+  int pinned = 0;            // particles pinned by the scene's pins
   double force_scale = 0.0;  // k_stretch x grid spacing, N: the unit of the relative residual
 };
 
+// What one protocol step (or the single solve of a scene without protocol) did.
+struct StepReport {
+  std::string name;          // "stretch", "impregnate", "release", "load", "solve"
+  SolveReport solve;         // the solve after the step (iterations 0 if none was needed)
+  int resin_springs = 0;     // impregnate: springs that received resin
+};
+
 struct RunResult {
-  PreparedScene prepared;  // the sheet; prepared.state holds the final state
-  SolveReport solve;
+  PreparedScene prepared;    // prepared.membrane.state holds the final state
+  SolveReport solve;         // totals over all solves; residual and convergence of the last
+  std::vector<StepReport> steps;
   double elastic_energy = 0.0;  // J, springs
   double bending_energy = 0.0;  // J
   double gravity_energy = 0.0;  // J
@@ -26,11 +37,12 @@ struct RunResult {
   ShapeSummary shape;
 };
 
-// Builds the model of a scene without running it (this is what `membra validate` checks).
-// Throws InputError naming the scene field when the scene cannot be built.
+// Builds the membrane of a scene without running it (what `membra validate` checks). Throws
+// InputError naming the scene field when the scene cannot be built.
 PreparedScene prepare_scene(const Scene& scene);
 
-// Runs a scene to the end. `progress` (optional) is called every so often.
+// Runs a scene to the end. `progress` (optional) is called every so often. Throws InputError
+// when a step cannot be carried out (a pattern that covers no spring).
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress = {});
 
 }  // namespace membra

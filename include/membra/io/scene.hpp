@@ -3,7 +3,9 @@
 // here; values are converted from the scene's units (mm, MPa, g/cm^3, s, N) to SI.
 // The format is documented in docs/scene.md and docs/scene.schema.json.
 #include <filesystem>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@
 
 #include "membra/geometry/grid_sheet.hpp"
 #include "membra/io/input_error.hpp"
+#include "membra/model/pattern.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/sheet.hpp"
 
@@ -28,6 +31,26 @@ struct SimulationSpec {
   bool stop_when_converged = true;
 };
 
+// One step of the process (DESIGN.md section 2), in SI.
+struct ProtocolStep {
+  enum class Kind { stretch, impregnate, release, load } kind = Kind::stretch;
+  std::string pointer;          // "/protocol/2", for messages
+  // stretch
+  Vec2 lambda{1.0, 1.0};
+  // impregnate
+  PatternPtr pattern;
+  nlohmann::json pattern_json;  // as written, for stencil export
+  Material resin;
+  int resin_side = +1;          // +1 top, -1 bottom
+  // release
+  int increments = 10;          // static solver: steps of the quasi-static path
+  double perturbation = 0.2e-3; // m, symmetry-breaking bump
+  std::uint64_t seed = 1;
+  // load
+  std::optional<double> gravity;  // m/s^2 along -z
+  std::vector<PinSpec> pins;
+};
+
 struct Scene {
   std::filesystem::path file;  // where it was read from (empty for in-memory scenes)
   std::string name;
@@ -36,10 +59,12 @@ struct Scene {
   SheetOptions sheet;  // material in SI, K override in N/m
   std::vector<PinSpec> pins;
   SimulationSpec simulation;
+  std::vector<ProtocolStep> protocol;  // empty: one solve of the sheet as built
 };
 
-// Parses and validates a scene. Throws InputError naming the JSON pointer of the first problem.
-Scene parse_scene(const nlohmann::json& j);
+// Parses and validates a scene; files it names (images) are relative to base_dir. Throws
+// InputError naming the JSON pointer of the first problem.
+Scene parse_scene(const nlohmann::json& j, const std::filesystem::path& base_dir = ".");
 // Reads a scene file, applying `overrides` (see apply_override) before validation. Throws
 // InputError whose message starts with the file name: unreadable file, malformed JSON (with line
 // and column), a bad override, or any invalid field.

@@ -2,6 +2,7 @@
 // What every solver reports about a run.
 #include <string>
 
+
 namespace membra {
 
 struct SolveReport {
@@ -17,6 +18,7 @@ struct SolveReport {
 
 // Progress of a long run, passed to a callback every so often.
 struct Progress {
+  std::string stage;  // what is being solved ("release 3/10"), set by the caller of a solver
   long iteration = 0;
   long max_iterations = 0;
   double residual_relative = 0.0;

@@ -1,0 +1,19 @@
+#pragma once
+// Reading grey images (PNG masks and fields) and writing PNG pictures.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace membra {
+
+// A grey raster, values 0 (black) .. 1 (white), row 0 at the top.
+struct GreyImage {
+  int width = 0, height = 0;
+  std::vector<float> value;
+};
+
+// Reads a PNG (or any format stb_image reads) as grey. An RGB(A) image is accepted only if every
+// pixel has R = G = B. Throws InputError at `where` if the file cannot be read or has colour.
+GreyImage load_grey_image(const std::filesystem::path& file, const std::string& where);
+
+}  // namespace membra

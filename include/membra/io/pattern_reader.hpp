@@ -1,0 +1,24 @@
+#pragma once
+// Patterns from scene JSON (docs/scene.md, "Patterns"). Values in mm and degrees; the pattern
+// is built in SI frame coordinates.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "membra/model/pattern.hpp"
+
+namespace membra {
+
+// Parses the pattern at `pointer`. Image paths are relative to `base_dir`. `frame_size` (m) is
+// the size of the stretched frame, used to extend hyperbola branches across it. Throws
+// InputError naming the JSON pointer of a bad value.
+PatternPtr read_pattern(const nlohmann::json& j, const std::string& pointer,
+                        const std::filesystem::path& base_dir, const Vec2& frame_size);
+
+// Keys of each pattern kind, for the schema test.
+std::map<std::string, std::vector<std::string>> pattern_known_keys();
+
+}  // namespace membra

@@ -1,0 +1,63 @@
+#pragma once
+// The membrane being processed: its sheet and state, and what the protocol has done to it so
+// far (frame, resin). The protocol steps of DESIGN.md section 2 are small functions of it; the
+// solves between them are the caller's (see io/run.hpp).
+#include <cstdint>
+#include <vector>
+
+#include "membra/model/material.hpp"
+#include "membra/model/pattern.hpp"
+#include "membra/model/sheet.hpp"
+
+namespace membra {
+
+struct Membrane {
+  Sheet sheet;   // sheet.model's rest lengths and stiffnesses follow the process
+  State state;
+
+  // Per spring.
+  std::vector<double> natural_length;   // latex rest length, m
+  std::vector<double> latex_stiffness;  // k of the latex alone, N/m
+  std::vector<double> resin_fraction;   // share of the spring's length inside resin, 0..1
+  std::vector<double> resin_stiffness;  // k of the resin alone, N/m
+  std::vector<double> resin_length;     // length at impregnation (the resin's rest length), m
+  std::vector<double> frame_length;     // length when the release began, m
+  // Per bending element.
+  std::vector<double> latex_bending;    // c of the latex alone, J
+  std::vector<double> resin_bending;    // c of the resin alone, J
+  std::vector<double> bending_fraction; // share inside resin
+
+  std::vector<int> frame;     // particles the frame holds (empty once released)
+  Vec2 stretch{1.0, 1.0};     // frame stretch ratios applied so far
+  int resin_side = +1;        // +1 resin on top (z > 0 face), -1 on the bottom
+  bool releasing = false;     // the release has begun: latex rest lengths follow release_level
+  double release_level = 1.0; // 1 = latex relaxed at its frame length, 0 = back to natural
+};
+
+// Wraps a freshly built sheet (at rest, nothing pinned by the frame).
+Membrane make_membrane(Sheet sheet);
+
+// stretch: maps positions by (lx, ly) and pins the outer boundary rows and columns to the frame.
+// Requires lx, ly > 0. Returns the number of frame particles.
+int stretch_frame(Membrane& m, double lx, double ly);
+
+// impregnate: springs and bending elements inside `pattern` (frame coordinates, evaluated at
+// the current positions) become a latex-resin composite whose resin part is at rest at its
+// current length. Returns the number of springs that received resin. `side` is +1 (top) or -1.
+int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side);
+
+// release (start): the frame lets go. Latex rest lengths are set to the current lengths
+// (release_level 1), so the sheet starts in equilibrium; lowering the level to 0 then returns
+// the latex to its natural length gradually (a path, see docs/process.md).
+void begin_release(Membrane& m);
+// Sets the release level in [0, 1] and updates rest lengths and stiffnesses.
+void set_release_level(Membrane& m, double level);
+
+// Deterministic out-of-plane perturbation that breaks the symmetry of a flat sheet: a smooth
+// bump of `amplitude` (m) towards the resin side plus 10 % seeded noise.
+void perturb(Membrane& m, double amplitude, std::uint64_t seed);
+
+// Rest length and stiffness of one spring from the composite rule (docs/process.md).
+void update_spring(Membrane& m, int s);
+
+}  // namespace membra

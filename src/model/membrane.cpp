@@ -1,0 +1,130 @@
+#include "membra/model/membrane.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+
+namespace membra {
+
+Membrane make_membrane(Sheet sheet) {
+  Membrane m;
+  m.sheet = std::move(sheet);
+  m.state = State::at_rest(m.sheet.model);
+  const Springs& s = m.sheet.model.springs;
+  m.natural_length = s.rest_length;
+  m.latex_stiffness = s.stiffness;
+  m.resin_fraction.assign(s.rest_length.size(), 0.0);
+  m.resin_stiffness.assign(s.rest_length.size(), 0.0);
+  m.resin_length = s.rest_length;
+  m.frame_length = s.rest_length;
+  const Bending& b = m.sheet.model.bending;
+  m.latex_bending = b.stiffness;
+  m.resin_bending.assign(b.stiffness.size(), 0.0);
+  m.bending_fraction.assign(b.stiffness.size(), 0.0);
+  return m;
+}
+
+int stretch_frame(Membrane& m, double lx, double ly) {
+  if (!(lx > 0.0) || !(ly > 0.0)) throw std::invalid_argument("stretch ratios must be > 0");
+  m.state.x.row(0) *= lx;
+  m.state.x.row(1) *= ly;
+  m.state.v.setZero();
+  m.stretch = m.stretch.cwiseProduct(Vec2(lx, ly));
+  const GridSheet& g = m.sheet.grid;
+  Model& model = m.sheet.model;
+  for (int p = 0; p < model.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    if (i != 0 && j != 0 && i != g.nx() - 1 && j != g.ny() - 1) continue;
+    if (model.pinned(p)) continue;  // already held (a user pin or the frame)
+    model.pin(p);
+    m.frame.push_back(p);
+  }
+  return static_cast<int>(m.frame.size());
+}
+
+void update_spring(Membrane& m, int s) {
+  Springs& sp = m.sheet.model.springs;
+  const double l_nat = m.natural_length[s];
+  const double latex_rest =
+      m.releasing ? l_nat + m.release_level * (m.frame_length[s] - l_nat) : l_nat;
+  const double f = m.resin_fraction[s], kl = m.latex_stiffness[s];
+  if (f <= 0.0) {
+    sp.rest_length[s] = latex_rest;
+    sp.stiffness[s] = kl;
+    return;
+  }
+  // Resin part: resin and latex in parallel (the resin soaks the latex), the resin at rest at
+  // its impregnation length. Along the spring, the resin and latex parts act in series.
+  const double k_in = m.resin_stiffness[s] + kl;
+  const double rest_in = (m.resin_stiffness[s] * m.resin_length[s] + kl * latex_rest) / k_in;
+  sp.stiffness[s] = 1.0 / ((1.0 - f) / kl + f / k_in);
+  sp.rest_length[s] = (1.0 - f) * latex_rest + f * rest_in;
+}
+
+int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side) {
+  Model& model = m.sheet.model;
+  const Points& x = m.state.x;
+  const LatticeStiffness kr = homogenize(resin, m.sheet.stiffness.flex > 0.0
+                                                    ? m.sheet.stiffness.flex / m.sheet.stiffness.stretch
+                                                    : 0.0);
+  int count = 0;
+  Springs& sp = model.springs;
+  for (int s = 0; s < sp.size(); ++s) {
+    const double f = fraction_inside(pattern, x.col(sp.a[s]).head<2>(), x.col(sp.b[s]).head<2>());
+    if (f <= 0.0) continue;
+    ++count;
+    m.resin_fraction[s] = std::max(m.resin_fraction[s], f);
+    m.resin_length[s] = (x.col(sp.b[s]) - x.col(sp.a[s])).norm();
+    m.resin_stiffness[s] = sp.family[s] == SpringFamily::shear  ? kr.shear
+                           : sp.family[s] == SpringFamily::flex ? kr.flex
+                                                                 : kr.stretch;
+    update_spring(m, s);
+  }
+  Bending& b = model.bending;
+  const double d_resin = bending_stiffness(resin);
+  for (int e = 0; e < b.size(); ++e) {
+    const auto& v = b.v[e];
+    const double f = 0.5 * (fraction_inside(pattern, x.col(v[0]).head<2>(), x.col(v[1]).head<2>(), 8) +
+                            fraction_inside(pattern, x.col(v[1]).head<2>(), x.col(v[2]).head<2>(), 8));
+    if (f <= 0.0) continue;
+    m.bending_fraction[e] = std::max(m.bending_fraction[e], f);
+    m.resin_bending[e] = b.factor[e] * d_resin;
+    const double cl = m.latex_bending[e], fe = m.bending_fraction[e];
+    b.stiffness[e] = 1.0 / ((1.0 - fe) / cl + fe / (cl + m.resin_bending[e]));
+  }
+  m.resin_side = side >= 0 ? 1 : -1;
+  return count;
+}
+
+void begin_release(Membrane& m) {
+  Model& model = m.sheet.model;
+  for (int p : m.frame) model.unpin(p);
+  m.frame.clear();
+  const Springs& sp = model.springs;
+  for (int s = 0; s < sp.size(); ++s)
+    m.frame_length[s] = (m.state.x.col(sp.b[s]) - m.state.x.col(sp.a[s])).norm();
+  m.releasing = true;
+  set_release_level(m, 1.0);
+}
+
+void set_release_level(Membrane& m, double level) {
+  m.release_level = std::clamp(level, 0.0, 1.0);
+  for (int s = 0; s < m.sheet.model.springs.size(); ++s) update_spring(m, s);
+}
+
+void perturb(Membrane& m, double amplitude, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> noise(-1.0, 1.0);
+  const GridSheet& g = m.sheet.grid;
+  for (int p = 0; p < m.sheet.model.num_particles(); ++p) {
+    if (m.sheet.model.pinned(p)) continue;
+    const auto [i, j] = g.node(p);
+    const double u = static_cast<double>(i) / (g.nx() - 1), v = static_cast<double>(j) / (g.ny() - 1);
+    const double bump = std::sin(std::numbers::pi * u) * std::sin(std::numbers::pi * v);
+    m.state.x(2, p) += amplitude * (m.resin_side * bump + 0.1 * noise(rng));
+  }
+}
+
+}  // namespace membra

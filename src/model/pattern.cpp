@@ -1,0 +1,218 @@
+#include "membra/model/pattern.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace membra {
+namespace {
+
+double segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).squaredNorm();
+}
+
+class Strip final : public Pattern {
+ public:
+  Strip(std::vector<Vec2> pts, double width) : pts_(std::move(pts)), r_(0.5 * width) {
+    if (pts_.empty() || !(width > 0.0)) throw std::invalid_argument("strip: needs points and width > 0");
+    for (const auto& p : pts_) box_.extend(p);
+    box_.min -= Vec2::Constant(r_);
+    box_.max += Vec2::Constant(r_);
+  }
+  bool contains(const Vec2& p) const override {
+    if ((p.array() < box_.min.array()).any() || (p.array() > box_.max.array()).any()) return false;
+    const double r2 = r_ * r_;
+    if (pts_.size() == 1) return (p - pts_[0]).squaredNorm() <= r2;
+    for (size_t i = 0; i + 1 < pts_.size(); ++i)
+      if (segment_distance2(p, pts_[i], pts_[i + 1]) <= r2) return true;
+    return false;
+  }
+  Box2 bounds() const override { return box_; }
+
+ private:
+  std::vector<Vec2> pts_;
+  double r_;
+  Box2 box_;
+};
+
+class Ellipse final : public Pattern {
+ public:
+  Ellipse(Vec2 c, double a, double b, double angle) : c_(c), a_(a), b_(b), cos_(std::cos(angle)), sin_(std::sin(angle)) {
+    if (!(a > 0.0) || !(b > 0.0)) throw std::invalid_argument("ellipse: radii must be > 0");
+  }
+  bool contains(const Vec2& p) const override {
+    const Vec2 d = p - c_;
+    const double u = cos_ * d.x() + sin_ * d.y(), v = -sin_ * d.x() + cos_ * d.y();
+    return (u / a_) * (u / a_) + (v / b_) * (v / b_) <= 1.0;
+  }
+  Box2 bounds() const override {
+    const double hx = std::hypot(a_ * cos_, b_ * sin_), hy = std::hypot(a_ * sin_, b_ * cos_);
+    return {c_ - Vec2(hx, hy), c_ + Vec2(hx, hy)};
+  }
+
+ private:
+  Vec2 c_;
+  double a_, b_, cos_, sin_;
+};
+
+class Polygon final : public Pattern {
+ public:
+  explicit Polygon(std::vector<Vec2> v) : v_(std::move(v)) {
+    if (v_.size() < 3) throw std::invalid_argument("polygon: needs at least 3 vertices");
+    for (const auto& p : v_) box_.extend(p);
+  }
+  bool contains(const Vec2& p) const override {
+    bool in = false;
+    for (size_t i = 0, j = v_.size() - 1; i < v_.size(); j = i++) {
+      const Vec2 &a = v_[i], &b = v_[j];
+      if ((a.y() > p.y()) != (b.y() > p.y()) &&
+          p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+        in = !in;
+    }
+    return in;
+  }
+  Box2 bounds() const override { return box_; }
+
+ private:
+  std::vector<Vec2> v_;
+  Box2 box_;
+};
+
+class Raster final : public Pattern {
+ public:
+  Raster(std::vector<float> g, int w, int h, Vec2 origin, Vec2 size, double threshold, bool invert)
+      : g_(std::move(g)), w_(w), h_(h), origin_(origin), size_(size), threshold_(threshold), invert_(invert) {
+    if (w <= 0 || h <= 0 || g_.size() != static_cast<size_t>(w) * h)
+      throw std::invalid_argument("image: empty or inconsistent raster");
+    if (!(size.x() > 0.0) || !(size.y() > 0.0)) throw std::invalid_argument("image: size must be > 0");
+  }
+  bool contains(const Vec2& p) const override {
+    const Vec2 t = (p - origin_).cwiseQuotient(size_);
+    if (t.x() < 0.0 || t.y() < 0.0 || t.x() >= 1.0 || t.y() >= 1.0) return false;
+    const int col = std::min(w_ - 1, static_cast<int>(t.x() * w_));
+    const int row = std::min(h_ - 1, static_cast<int>((1.0 - t.y()) * h_));  // row 0 at the top
+    const bool dark = g_[static_cast<size_t>(row) * w_ + col] < threshold_;
+    return dark != invert_;
+  }
+  Box2 bounds() const override { return {origin_, origin_ + size_}; }
+
+ private:
+  std::vector<float> g_;
+  int w_, h_;
+  Vec2 origin_, size_;
+  double threshold_;
+  bool invert_;
+};
+
+class Union final : public Pattern {
+ public:
+  explicit Union(std::vector<PatternPtr> parts) : parts_(std::move(parts)) {
+    for (const auto& p : parts_) box_.extend(p->bounds());
+  }
+  bool contains(const Vec2& p) const override {
+    return std::any_of(parts_.begin(), parts_.end(), [&](const auto& q) { return q->contains(p); });
+  }
+  Box2 bounds() const override { return box_; }
+
+ private:
+  std::vector<PatternPtr> parts_;
+  Box2 box_;
+};
+
+class Difference final : public Pattern {
+ public:
+  explicit Difference(std::vector<PatternPtr> parts) : parts_(std::move(parts)) {
+    if (parts_.empty()) throw std::invalid_argument("difference: needs at least one pattern");
+  }
+  bool contains(const Vec2& p) const override {
+    if (!parts_[0]->contains(p)) return false;
+    for (size_t i = 1; i < parts_.size(); ++i)
+      if (parts_[i]->contains(p)) return false;
+    return true;
+  }
+  Box2 bounds() const override { return parts_[0]->bounds(); }
+
+ private:
+  std::vector<PatternPtr> parts_;
+};
+
+// Samples of a closed or open curve as a polyline, for ring and hyperbola bands.
+std::vector<Vec2> ellipse_outline(Vec2 c, double a, double b, double angle) {
+  const int n = 720;
+  std::vector<Vec2> pts;
+  for (int i = 0; i <= n; ++i) {
+    const double t = 2.0 * std::numbers::pi * i / n;
+    const Vec2 q(a * std::cos(t), b * std::sin(t));
+    pts.push_back(c + Vec2(std::cos(angle) * q.x() - std::sin(angle) * q.y(),
+                           std::sin(angle) * q.x() + std::cos(angle) * q.y()));
+  }
+  return pts;
+}
+
+}  // namespace
+
+PatternPtr make_strip(std::vector<Vec2> points, double width) {
+  return std::make_shared<Strip>(std::move(points), width);
+}
+
+PatternPtr make_ellipse(Vec2 centre, double a, double b, double angle) {
+  return std::make_shared<Ellipse>(centre, a, b, angle);
+}
+
+PatternPtr make_ellipse_ring(Vec2 centre, double a, double b, double angle, double width) {
+  if (!(a > 0.0) || !(b > 0.0)) throw std::invalid_argument("ellipse: radii must be > 0");
+  return make_strip(ellipse_outline(centre, a, b, angle), width);
+}
+
+PatternPtr make_hyperbola(Vec2 centre, double a, double b, double angle, double width, bool along_x,
+                          double reach) {
+  if (!(a > 0.0) || !(b > 0.0)) throw std::invalid_argument("hyperbola: a and b must be > 0");
+  // Parametrize x = +-a cosh t, y = b sinh t (or swapped); sinh(t_max) min(a, b) >= reach makes
+  // the branches leave the disc of radius `reach`, and points beyond 1.5 reach are dropped.
+  const double t_max = std::asinh(reach / std::min(a, b));
+  std::vector<PatternPtr> branches;
+  for (int sign : {-1, 1}) {
+    std::vector<Vec2> pts;
+    const int n = 400;
+    for (int i = -n; i <= n; ++i) {
+      const double t = t_max * i / n;
+      Vec2 q = along_x ? Vec2(sign * a * std::cosh(t), b * std::sinh(t))
+                       : Vec2(a * std::sinh(t), sign * b * std::cosh(t));
+      if (q.norm() > 1.5 * reach) continue;
+      pts.push_back(centre + Vec2(std::cos(angle) * q.x() - std::sin(angle) * q.y(),
+                                  std::sin(angle) * q.x() + std::cos(angle) * q.y()));
+    }
+    branches.push_back(make_strip(std::move(pts), width));
+  }
+  return make_union(std::move(branches));
+}
+
+PatternPtr make_polygon(std::vector<Vec2> vertices) {
+  return std::make_shared<Polygon>(std::move(vertices));
+}
+
+PatternPtr make_raster(std::vector<float> grey, int width, int height, Vec2 origin, Vec2 size,
+                       double threshold, bool invert) {
+  return std::make_shared<Raster>(std::move(grey), width, height, origin, size, threshold, invert);
+}
+
+PatternPtr make_union(std::vector<PatternPtr> parts) {
+  return std::make_shared<Union>(std::move(parts));
+}
+
+PatternPtr make_difference(std::vector<PatternPtr> parts) {
+  return std::make_shared<Difference>(std::move(parts));
+}
+
+double fraction_inside(const Pattern& pattern, const Vec2& a, const Vec2& b, int samples) {
+  int in = 0;
+  for (int k = 0; k < samples; ++k)
+    if (pattern.contains(a + (k + 0.5) / samples * (b - a))) ++in;
+  return static_cast<double>(in) / samples;
+}
+
+}  // namespace membra
