@@ -4,13 +4,14 @@
 #include "membra/model/forces.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/solve/dynamics.hpp"
+#include "membra/solve/newton_solver.hpp"
 #include "membra/solve/static_solver.hpp"
 
 namespace membra {
 namespace {
 
-// Solves for equilibrium with the scene's solver: FIRE for "static", damped time stepping
-// otherwise.
+// Solves for equilibrium with the scene's solver: FIRE for "static", projected Newton for
+// "newton", damped time stepping otherwise.
 SolveReport solve(const Scene& scene, const PreparedScene& p, State& s, const std::string& stage,
                   const std::function<void(const Progress&)>& progress) {
   auto staged = [&](const Progress& pr) {
@@ -20,6 +21,13 @@ SolveReport solve(const Scene& scene, const PreparedScene& p, State& s, const st
     progress(q);
   };
   const Model& m = p.membrane.sheet.model;
+  if (scene.simulation.solver == "newton") {
+    NewtonOptions o;
+    o.tolerance = scene.simulation.tolerance;
+    o.force_scale = p.force_scale;
+    o.progress = staged;
+    return solve_newton(m, s, o);
+  }
   if (scene.simulation.solver == "static") {
     StaticOptions o;
     o.tolerance = scene.simulation.tolerance;
@@ -103,7 +111,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
       case ProtocolStep::Kind::release: {
         perturb(mem, step.perturbation, step.seed);
         begin_release(mem);
-        if (scene.simulation.solver == "static") {
+        if (scene.simulation.solver == "static" || scene.simulation.solver == "newton") {
           // Quasi-static path: the latex returns to its natural length in increments.
           StepReport rep{"release", {}, 0};
           for (int k = 1; k <= step.increments && !rep.solve.diverged; ++k) {

@@ -162,7 +162,7 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   if (!top.has("simulation")) return;
   const JsonObject s = top.object("simulation", kSimulationKeys);
   std::vector<std::string_view> solvers = integrator_names();
-  solvers.insert(solvers.begin(), "static");
+  solvers.insert(solvers.begin(), {"static", "newton"});
   sim.solver = s.string("solver", sim.solver, solvers);
   if (s.has("K"))
     scene.sheet.stretch_stiffness =
@@ -189,7 +189,7 @@ void parse_protocol(const JsonObject& top, const json& j, const std::map<std::st
   Vec2 stretch(1.0, 1.0);
   bool pinned = !scene.pins.empty(), framed = false;
   double gravity = scene.simulation.gravity;
-  const bool is_static = scene.simulation.solver == "static";
+  const bool is_static = scene.simulation.solver == "static" || scene.simulation.solver == "newton";
   auto check_equilibrium = [&](const std::string& ptr) {
     if (is_static && !pinned && !framed && gravity != 0.0)
       throw InputError(ptr, "a free sheet under gravity has no static equilibrium: pin it (a load "
@@ -269,7 +269,7 @@ Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   parse_pins(top, scene, scene.pins);
   parse_simulation(top, scene);
   parse_protocol(top, j, materials, base_dir, scene);
-  if (scene.protocol.empty() && scene.simulation.solver == "static" && scene.pins.empty() &&
+  if (scene.protocol.empty() && (scene.simulation.solver == "static" || scene.simulation.solver == "newton") && scene.pins.empty() &&
       scene.simulation.gravity != 0.0)
     throw InputError("/simulation/G", "a free sheet under gravity has no static equilibrium: add "
                                       "pins or set G to 0");
