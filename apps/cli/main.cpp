@@ -25,8 +25,9 @@ int cmd_validate(const std::string& scene_file, const std::vector<std::string>& 
   try {
     const membra::PreparedScene p = membra::prepare_scene(scene);
     if (!quiet)
-      std::cout << scene_file << ": valid (" << p.membrane.sheet.model.num_particles() << " particles, "
-                << p.membrane.sheet.model.springs.size() << " springs, " << p.pinned << " pinned)\n";
+      std::cout << scene_file << ": valid (" << p.membrane.sheet.model.num_particles()
+                << " particles, " << p.membrane.sheet.model.springs.size() << " springs, "
+                << p.pinned << " pinned)\n";
   } catch (const membra::InputError& e) {
     throw membra::InputError(scene_file + ": " + e.where(), e.detail());
   }

@@ -13,10 +13,11 @@ namespace {
 using nlohmann::json;
 
 const std::vector<std::string_view> kKinds = {"strip", "ellipse", "hyperbola", "polygon",
-                                              "image", "union", "difference"};
+                                              "image", "union",   "difference"};
 const std::vector<std::string_view> kStripKeys = {"points", "width"};
 const std::vector<std::string_view> kEllipseKeys = {"center", "radii", "angle", "ring_width"};
-const std::vector<std::string_view> kHyperbolaKeys = {"center", "a", "b", "angle", "width", "opens"};
+const std::vector<std::string_view> kHyperbolaKeys = {"center", "a",     "b",
+                                                      "angle",  "width", "opens"};
 const std::vector<std::string_view> kPolygonKeys = {"points"};
 const std::vector<std::string_view> kImageKeys = {"file", "origin", "size", "threshold", "invert"};
 
@@ -76,8 +77,9 @@ PatternPtr read_pattern(const json& j, const std::string& pointer,
     const Vec2 c = read_vec2(o, "center");
     const Vec2 r = read_vec2(o, "radii", Bounds::positive());
     if (o.has("ring_width"))
-      return make_ellipse_ring(c, r.x(), r.y(), degrees(o),
-                               o.number("ring_width", std::nullopt, Bounds::positive()) * units::mm);
+      return make_ellipse_ring(
+          c, r.x(), r.y(), degrees(o),
+          o.number("ring_width", std::nullopt, Bounds::positive()) * units::mm);
     return make_ellipse(c, r.x(), r.y(), degrees(o));
   }
   if (kind == "hyperbola") {
@@ -105,13 +107,20 @@ PatternPtr read_pattern(const json& j, const std::string& pointer,
   const Vec2 origin = o.has("origin") ? read_vec2(o, "origin") : Vec2::Zero();
   const Vec2 size = o.has("size") ? read_vec2(o, "size", Bounds::positive()) : frame_size;
   return make_raster(img.value, img.width, img.height, origin, size,
-                     o.number("threshold", 0.5, Bounds::between(0.0, 1.0)), o.boolean("invert", false));
+                     o.number("threshold", 0.5, Bounds::between(0.0, 1.0)),
+                     o.boolean("invert", false));
 }
 
 std::map<std::string, std::vector<std::string>> pattern_known_keys() {
-  auto s = [](const std::vector<std::string_view>& v) { return std::vector<std::string>(v.begin(), v.end()); };
-  return {{"", s(kKinds)},          {"strip", s(kStripKeys)}, {"ellipse", s(kEllipseKeys)},
-          {"hyperbola", s(kHyperbolaKeys)}, {"polygon", s(kPolygonKeys)}, {"image", s(kImageKeys)}};
+  auto s = [](const std::vector<std::string_view>& v) {
+    return std::vector<std::string>(v.begin(), v.end());
+  };
+  return {{"", s(kKinds)},
+          {"strip", s(kStripKeys)},
+          {"ellipse", s(kEllipseKeys)},
+          {"hyperbola", s(kHyperbolaKeys)},
+          {"polygon", s(kPolygonKeys)},
+          {"image", s(kImageKeys)}};
 }
 
 }  // namespace membra

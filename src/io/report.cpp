@@ -39,7 +39,8 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                          {"residual_relative", step.solve.residual_relative},
                          {"converged", step.solve.converged},
                          {"wall_seconds", step.solve.wall_seconds}};
-    if (step.name == "impregnate") js = {{"step", step.name}, {"resin_springs", step.resin_springs}};
+    if (step.name == "impregnate")
+      js = {{"step", step.name}, {"resin_springs", step.resin_springs}};
     j["steps"].push_back(js);
   }
   j["stiffness"] = {{"stretch", r.prepared.membrane.sheet.stiffness.stretch / units::N_per_mm},

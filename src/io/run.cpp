@@ -96,7 +96,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
     bool ok = true;
     switch (step.kind) {
       case ProtocolStep::Kind::stretch:
-        stretch_frame(mem, step.lambda.x(), step.lambda.y());
+        stretch_frame(mem, step.lambda.x(), step.lambda.y(), step.hold);
         ok = record({"stretch", solve(scene, r.prepared, s, "stretch", progress), 0});
         break;
       case ProtocolStep::Kind::impregnate: {

@@ -20,16 +20,18 @@ const std::vector<std::string_view> kTopKeys = {"$schema",   "name", "descriptio
                                                 "materials", "pins", "simulation",  "protocol"};
 const std::vector<std::string_view> kSheetKeys = {"size", "resolution", "material", "springs",
                                                   "bending"};
-const std::vector<std::string_view> kStretchKeys = {"step", "lambda"};
+const std::vector<std::string_view> kStretchKeys = {"step", "lambda", "hold"};
 const std::vector<std::string_view> kImpregnateKeys = {"step", "pattern", "material", "resin_side"};
 const std::vector<std::string_view> kReleaseKeys = {"step", "increments", "perturbation", "seed"};
 const std::vector<std::string_view> kLoadKeys = {"step", "gravity", "pins"};
 const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
 const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
-const std::vector<std::string_view> kSimulationKeys = {
-    "solver", "K", "G", "T", "D", "spring_damping", "steps", "max_iterations", "tolerance",
-    "stop_when_converged"};
+const std::vector<std::string_view> kSimulationKeys = {"solver",    "K",
+                                                       "G",         "T",
+                                                       "D",         "spring_damping",
+                                                       "steps",     "max_iterations",
+                                                       "tolerance", "stop_when_converged"};
 
 // Largest grid we accept; the robustness issue adds a memory-based limit.
 constexpr long kMaxNodesPerSide = 4096;
@@ -180,7 +182,8 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
 
 // The steps, checked in order: the frame size a pattern must fit depends on the stretches
 // before it, and a static solve of a free sheet under gravity has no equilibrium.
-void parse_protocol(const JsonObject& top, const json& j, const std::map<std::string, Material>& materials,
+void parse_protocol(const JsonObject& top, const json& j,
+                    const std::map<std::string, Material>& materials,
                     const std::filesystem::path& base_dir, Scene& scene) {
   if (!top.has("protocol")) return;
   const auto& arr = top.at("protocol");
@@ -192,16 +195,20 @@ void parse_protocol(const JsonObject& top, const json& j, const std::map<std::st
   const bool is_static = scene.simulation.solver == "static" || scene.simulation.solver == "newton";
   auto check_equilibrium = [&](const std::string& ptr) {
     if (is_static && !pinned && !framed && gravity != 0.0)
-      throw InputError(ptr, "a free sheet under gravity has no static equilibrium: pin it (a load "
-                            "step with pins) or set simulation.G (or the load step's gravity) to 0");
+      throw InputError(ptr,
+                       "a free sheet under gravity has no static equilibrium: pin it (a load "
+                       "step with pins) or set simulation.G (or the load step's gravity) to 0");
   };
   for (size_t i = 0; i < arr.size(); ++i) {
     const std::string ptr = "/protocol/" + std::to_string(i);
     if (!arr[i].is_object() || !arr[i].contains("step"))
-      throw InputError(ptr, "expected an object with a \"step\" key (stretch, impregnate, release, load)");
-    const JsonObject head(arr[i], ptr, {"step", "lambda", "pattern", "material", "resin_side",
-                                        "increments", "perturbation", "seed", "gravity", "pins"});
-    const std::string kind = head.string("step", std::nullopt, {"stretch", "impregnate", "release", "load"});
+      throw InputError(
+          ptr, "expected an object with a \"step\" key (stretch, impregnate, release, load)");
+    const JsonObject head(arr[i], ptr,
+                          {"step", "lambda", "hold", "pattern", "material", "resin_side",
+                           "increments", "perturbation", "seed", "gravity", "pins"});
+    const std::string kind =
+        head.string("step", std::nullopt, {"stretch", "impregnate", "release", "load"});
     ProtocolStep step;
     step.pointer = ptr;
     if (kind == "stretch") {
@@ -209,6 +216,27 @@ void parse_protocol(const JsonObject& top, const json& j, const std::map<std::st
       step.kind = ProtocolStep::Kind::stretch;
       const auto l = o.numbers("lambda", 2, Bounds{0.0, 10.0, true});
       step.lambda = Vec2(l[0], l[1]);
+      if (o.has("hold")) {
+        const auto& h = o.at("hold");
+        if (!h.is_array() || h.empty())
+          throw InputError(o.pointer("hold"),
+                           "expected a non-empty array of edges: left, right, bottom, top");
+        step.hold = {false, false, false, false};
+        for (size_t e = 0; e < h.size(); ++e) {
+          const std::string ep = o.pointer("hold") + "/" + std::to_string(e);
+          const std::string edge = h[e].is_string() ? h[e].get<std::string>() : "";
+          if (edge == "left")
+            step.hold.left = true;
+          else if (edge == "right")
+            step.hold.right = true;
+          else if (edge == "bottom")
+            step.hold.bottom = true;
+          else if (edge == "top")
+            step.hold.top = true;
+          else
+            throw InputError(ep, "expected one of left, right, bottom, top, got " + h[e].dump());
+        }
+      }
       stretch = stretch.cwiseProduct(step.lambda);
       framed = true;
     } else if (kind == "impregnate") {
@@ -234,8 +262,9 @@ void parse_protocol(const JsonObject& top, const json& j, const std::map<std::st
       const JsonObject o(arr[i], ptr, kReleaseKeys);
       step.kind = ProtocolStep::Kind::release;
       step.increments = static_cast<int>(o.integer("increments", step.increments, 1, 100000));
-      step.perturbation = o.number("perturbation", step.perturbation / units::mm,
-                                   Bounds::non_negative()) * units::mm;
+      step.perturbation =
+          o.number("perturbation", step.perturbation / units::mm, Bounds::non_negative()) *
+          units::mm;
       step.seed = static_cast<std::uint64_t>(o.integer("seed", 1, 0, 2'000'000'000L));
       if (!framed) throw InputError(ptr, "release needs a stretch step before it");
       framed = false;
@@ -243,7 +272,8 @@ void parse_protocol(const JsonObject& top, const json& j, const std::map<std::st
     } else {
       const JsonObject o(arr[i], ptr, kLoadKeys);
       step.kind = ProtocolStep::Kind::load;
-      if (o.has("gravity")) step.gravity = o.number("gravity", std::nullopt, Bounds::between(-1e4, 1e4));
+      if (o.has("gravity"))
+        step.gravity = o.number("gravity", std::nullopt, Bounds::between(-1e4, 1e4));
       if (step.gravity) gravity = *step.gravity;
       parse_pins(o, scene, step.pins);
       pinned = pinned || !step.pins.empty();
@@ -269,10 +299,12 @@ Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   parse_pins(top, scene, scene.pins);
   parse_simulation(top, scene);
   parse_protocol(top, j, materials, base_dir, scene);
-  if (scene.protocol.empty() && (scene.simulation.solver == "static" || scene.simulation.solver == "newton") && scene.pins.empty() &&
-      scene.simulation.gravity != 0.0)
-    throw InputError("/simulation/G", "a free sheet under gravity has no static equilibrium: add "
-                                      "pins or set G to 0");
+  if (scene.protocol.empty() &&
+      (scene.simulation.solver == "static" || scene.simulation.solver == "newton") &&
+      scene.pins.empty() && scene.simulation.gravity != 0.0)
+    throw InputError("/simulation/G",
+                     "a free sheet under gravity has no static equilibrium: add "
+                     "pins or set G to 0");
   return scene;
 }
 

@@ -26,7 +26,7 @@ Membrane make_membrane(Sheet sheet) {
   return m;
 }
 
-int stretch_frame(Membrane& m, double lx, double ly) {
+int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges) {
   if (!(lx > 0.0) || !(ly > 0.0)) throw std::invalid_argument("stretch ratios must be > 0");
   m.state.x.row(0) *= lx;
   m.state.x.row(1) *= ly;
@@ -36,7 +36,9 @@ int stretch_frame(Membrane& m, double lx, double ly) {
   Model& model = m.sheet.model;
   for (int p = 0; p < model.num_particles(); ++p) {
     const auto [i, j] = g.node(p);
-    if (i != 0 && j != 0 && i != g.nx() - 1 && j != g.ny() - 1) continue;
+    const bool held = (edges.left && i == 0) || (edges.right && i == g.nx() - 1) ||
+                      (edges.bottom && j == 0) || (edges.top && j == g.ny() - 1);
+    if (!held) continue;
     if (model.pinned(p)) continue;  // already held (a user pin or the frame)
     model.pin(p);
     m.frame.push_back(p);
@@ -66,9 +68,9 @@ void update_spring(Membrane& m, int s) {
 int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side) {
   Model& model = m.sheet.model;
   const Points& x = m.state.x;
-  const LatticeStiffness kr = homogenize(resin, m.sheet.stiffness.flex > 0.0
-                                                    ? m.sheet.stiffness.flex / m.sheet.stiffness.stretch
-                                                    : 0.0);
+  const LatticeStiffness kr = homogenize(
+      resin,
+      m.sheet.stiffness.flex > 0.0 ? m.sheet.stiffness.flex / m.sheet.stiffness.stretch : 0.0);
   int count = 0;
   Springs& sp = model.springs;
   for (int s = 0; s < sp.size(); ++s) {
@@ -79,15 +81,16 @@ int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int s
     m.resin_length[s] = (x.col(sp.b[s]) - x.col(sp.a[s])).norm();
     m.resin_stiffness[s] = sp.family[s] == SpringFamily::shear  ? kr.shear
                            : sp.family[s] == SpringFamily::flex ? kr.flex
-                                                                 : kr.stretch;
+                                                                : kr.stretch;
     update_spring(m, s);
   }
   Bending& b = model.bending;
   const double d_resin = bending_stiffness(resin);
   for (int e = 0; e < b.size(); ++e) {
     const auto& v = b.v[e];
-    const double f = 0.5 * (fraction_inside(pattern, x.col(v[0]).head<2>(), x.col(v[1]).head<2>(), 8) +
-                            fraction_inside(pattern, x.col(v[1]).head<2>(), x.col(v[2]).head<2>(), 8));
+    const double f =
+        0.5 * (fraction_inside(pattern, x.col(v[0]).head<2>(), x.col(v[1]).head<2>(), 8) +
+               fraction_inside(pattern, x.col(v[1]).head<2>(), x.col(v[2]).head<2>(), 8));
     if (f <= 0.0) continue;
     m.bending_fraction[e] = std::max(m.bending_fraction[e], f);
     m.resin_bending[e] = b.factor[e] * d_resin;
@@ -121,7 +124,8 @@ void perturb(Membrane& m, double amplitude, std::uint64_t seed) {
   for (int p = 0; p < m.sheet.model.num_particles(); ++p) {
     if (m.sheet.model.pinned(p)) continue;
     const auto [i, j] = g.node(p);
-    const double u = static_cast<double>(i) / (g.nx() - 1), v = static_cast<double>(j) / (g.ny() - 1);
+    const double u = static_cast<double>(i) / (g.nx() - 1),
+                 v = static_cast<double>(j) / (g.ny() - 1);
     const double bump = std::sin(std::numbers::pi * u) * std::sin(std::numbers::pi * v);
     m.state.x(2, p) += amplitude * (m.resin_side * bump + 0.1 * noise(rng));
   }

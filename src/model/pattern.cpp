@@ -18,7 +18,8 @@ double segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
 class Strip final : public Pattern {
  public:
   Strip(std::vector<Vec2> pts, double width) : pts_(std::move(pts)), r_(0.5 * width) {
-    if (pts_.empty() || !(width > 0.0)) throw std::invalid_argument("strip: needs points and width > 0");
+    if (pts_.empty() || !(width > 0.0))
+      throw std::invalid_argument("strip: needs points and width > 0");
     for (const auto& p : pts_) box_.extend(p);
     box_.min -= Vec2::Constant(r_);
     box_.max += Vec2::Constant(r_);
@@ -41,7 +42,8 @@ class Strip final : public Pattern {
 
 class Ellipse final : public Pattern {
  public:
-  Ellipse(Vec2 c, double a, double b, double angle) : c_(c), a_(a), b_(b), cos_(std::cos(angle)), sin_(std::sin(angle)) {
+  Ellipse(Vec2 c, double a, double b, double angle)
+      : c_(c), a_(a), b_(b), cos_(std::cos(angle)), sin_(std::sin(angle)) {
     if (!(a > 0.0) || !(b > 0.0)) throw std::invalid_argument("ellipse: radii must be > 0");
   }
   bool contains(const Vec2& p) const override {
@@ -85,10 +87,17 @@ class Polygon final : public Pattern {
 class Raster final : public Pattern {
  public:
   Raster(std::vector<float> g, int w, int h, Vec2 origin, Vec2 size, double threshold, bool invert)
-      : g_(std::move(g)), w_(w), h_(h), origin_(origin), size_(size), threshold_(threshold), invert_(invert) {
+      : g_(std::move(g)),
+        w_(w),
+        h_(h),
+        origin_(origin),
+        size_(size),
+        threshold_(threshold),
+        invert_(invert) {
     if (w <= 0 || h <= 0 || g_.size() != static_cast<size_t>(w) * h)
       throw std::invalid_argument("image: empty or inconsistent raster");
-    if (!(size.x() > 0.0) || !(size.y() > 0.0)) throw std::invalid_argument("image: size must be > 0");
+    if (!(size.x() > 0.0) || !(size.y() > 0.0))
+      throw std::invalid_argument("image: size must be > 0");
   }
   bool contains(const Vec2& p) const override {
     const Vec2 t = (p - origin_).cwiseQuotient(size_);

@@ -1,13 +1,13 @@
 #include "membra/solve/newton_solver.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/CholmodSupport>
+#include <Eigen/Eigenvalues>
 #include <Eigen/SparseCore>
 
 #include "membra/model/bend_kernel.hpp"
@@ -51,7 +51,8 @@ class HessianAssembler {
       return static_cast<int>(std::lower_bound(begin, end, dr) - h_.innerIndexPtr());
     };
     for (int i = 0; i < s.size(); ++i)
-      visit(std::array<int, 2>{s.a[i], s.b[i]}, [&](int dr, int dc) { spring_slots_.push_back(index(dr, dc)); });
+      visit(std::array<int, 2>{s.a[i], s.b[i]},
+            [&](int dr, int dc) { spring_slots_.push_back(index(dr, dc)); });
     for (int e = 0; e < b.size(); ++e)
       visit(std::array<int, 3>{b.v[e][0], b.v[e][1], b.v[e][2]},
             [&](int dr, int dc) { bend_slots_.push_back(index(dr, dc)); });
@@ -226,8 +227,8 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
         compute_static_forces(model, xt, ft);
         ++r.force_passes;
         const bool armijo = et <= energy + 1e-4 * alpha * slope;
-        const bool roundoff = std::abs(et - energy) <= 1e-12 * std::abs(energy) &&
-                              residual(ft) < r.residual;
+        const bool roundoff =
+            std::abs(et - energy) <= 1e-12 * std::abs(energy) && residual(ft) < r.residual;
         if (std::isfinite(et) && (armijo || roundoff)) {
           x = std::move(xt);
           f = std::move(ft);
@@ -247,9 +248,8 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   r.wall_seconds = seconds();
   if (r.message.empty() || r.converged) {
     std::ostringstream msg;
-    msg << "newton: " << (r.converged ? "converged" : "not converged") << " after "
-        << r.iterations << " iterations, residual " << r.residual_relative << " (tolerance "
-        << o.tolerance << ")";
+    msg << "newton: " << (r.converged ? "converged" : "not converged") << " after " << r.iterations
+        << " iterations, residual " << r.residual_relative << " (tolerance " << o.tolerance << ")";
     r.message = msg.str();
   }
   return r;

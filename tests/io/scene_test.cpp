@@ -159,6 +159,85 @@ TEST_F(SceneFile, OverridesApplyBeforeValidation) {
   EXPECT_EQ(load_scene(f, {"name=plain words"}).name, "plain words");
 }
 
+json with_protocol(const json& impregnate_pattern) {
+  json j = minimal();
+  j["simulation"] = {{"G", 0}};
+  j.erase("pins");
+  j["protocol"] = {{{"step", "stretch"}, {"lambda", {1.5, 1.0}}},
+                   {{"step", "impregnate"}, {"pattern", impregnate_pattern}},
+                   {{"step", "release"}, {"increments", 2}}};
+  return j;
+}
+
+TEST(Scene, ProtocolErrorsNameTheField) {
+  const json strip = {{"strip", {{"points", {{0, 25}, {150, 25}}}, {"width", 5}}}};
+  EXPECT_EQ(error_at(with_protocol(strip)), "");
+  // The frame is 150 x 50 mm after a 1.5 stretch of the 100 x 50 mm sheet.
+  EXPECT_EQ(error_at(with_protocol({{"ellipse", {{"center", {400, 25}}, {"radii", {10, 10}}}}})),
+            "/protocol/1/pattern");
+  EXPECT_EQ(error_at(with_protocol({{"strip", {{"points", {{0, 25}, {150, 25}}}, {"width", 0}}}})),
+            "/protocol/1/pattern/strip/width");
+  EXPECT_EQ(error_at(with_protocol({{"circle", {}}})), "/protocol/1/pattern/circle");
+  EXPECT_EQ(
+      error_at(with_protocol({{"union", {strip, {{"polygon", {{"points", {{0, 0}, {1, 1}}}}}}}}})),
+      "/protocol/1/pattern/union/1/polygon/points");
+  json j = with_protocol(strip);
+  j["protocol"][0]["lambda"] = {0, 1};
+  EXPECT_EQ(error_at(j), "/protocol/0/lambda/0");
+  j = with_protocol(strip);
+  j["protocol"][0]["lambda"] = {-1.5, 1};
+  EXPECT_EQ(error_at(j), "/protocol/0/lambda/0");
+  j = with_protocol(strip);
+  j["protocol"][1]["material"] = "unobtainium";
+  EXPECT_EQ(error_at(j), "/protocol/1/material");
+  j = with_protocol(strip);
+  j["simulation"]["G"] = 9.81;  // released, free, under gravity: no static equilibrium
+  EXPECT_EQ(error_at(j), "/protocol/2");
+  j = with_protocol(strip);
+  j["protocol"].erase(0);  // release without stretch
+  EXPECT_EQ(error_at(j), "/protocol/1");
+  j = with_protocol({{"image", {{"file", "no-such-mask.png"}}}});
+  EXPECT_EQ(error_at(j), "/protocol/1/pattern/image/file");
+}
+
+TEST_F(SceneFile, ColourImageIsRejected) {
+  // A 1 x 1 red PNG (uncompressed deflate block), written byte by byte.
+  const unsigned char png[] = {
+      0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0x00, 0x00, 0x00, 0x0D, 0x49, 0x48,
+      0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x02, 0x00, 0x00,
+      0x00, 0x90, 0x77, 0x53, 0xDE, 0x00, 0x00, 0x00, 0x0C, 0x49, 0x44, 0x41, 0x54, 0x08,
+      0xD7, 0x63, 0xF8, 0xCF, 0xC0, 0x00, 0x00, 0x03, 0x01, 0x01, 0x00, 0x18, 0xDD, 0x8D,
+      0xB0, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4E, 0x44, 0xAE, 0x42, 0x60, 0x82};
+  std::ofstream(dir / "red.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(png), sizeof png);
+  write("junk.png", "this is not an image");
+  for (const char* name : {"red.png", "junk.png"}) {
+    json j = with_protocol({{"image", {{"file", name}}}});
+    try {
+      parse_scene(j, dir);
+      FAIL() << name;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where(), "/protocol/1/pattern/image/file") << name;
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+      if (std::string(name) == "red.png") {
+        EXPECT_NE(std::string(e.what()).find("not grayscale"), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
+TEST(Scene, PatternCoveringNoSpringIsReportedWhenRun) {
+  // A 1 mm dot between grid nodes (spacing 10 mm x 1.5): inside the frame, but touches nothing.
+  json j = with_protocol({{"ellipse", {{"center", {7.5, 5}}, {"radii", {0.5, 0.5}}}}});
+  const Scene s = parse_scene(j);
+  try {
+    run_scene(s);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/protocol/1/pattern");
+  }
+}
+
 TEST(Scene, PinsThatSelectNothingAreReportedAtPins) {
   json j = minimal();
   j["pins"] = {{{"box", {1, 1, 2, 2}}}};  // between nodes (spacing 10 mm)

@@ -53,7 +53,8 @@ TEST(Schema, KeysMatchTheParser) {
 }
 
 TEST(Schema, PatternKeysMatchTheParser) {
-  const json schema = load_json(std::filesystem::path(MEMBRA_SOURCE_DIR) / "docs/scene.schema.json");
+  const json schema =
+      load_json(std::filesystem::path(MEMBRA_SOURCE_DIR) / "docs/scene.schema.json");
   const json& pattern = schema["$defs"]["pattern"];
   for (const auto& [kind, keys] : pattern_known_keys()) {
     const json& node = kind.empty() ? pattern : pattern["properties"][kind];

@@ -21,14 +21,14 @@ struct PreparedScene {
 
 // What one protocol step (or the single solve of a scene without protocol) did.
 struct StepReport {
-  std::string name;          // "stretch", "impregnate", "release", "load", "solve"
-  SolveReport solve;         // the solve after the step (iterations 0 if none was needed)
-  int resin_springs = 0;     // impregnate: springs that received resin
+  std::string name;       // "stretch", "impregnate", "release", "load", "solve"
+  SolveReport solve;      // the solve after the step (iterations 0 if none was needed)
+  int resin_springs = 0;  // impregnate: springs that received resin
 };
 
 struct RunResult {
-  PreparedScene prepared;    // prepared.membrane.state holds the final state
-  SolveReport solve;         // totals over all solves; residual and convergence of the last
+  PreparedScene prepared;  // prepared.membrane.state holds the final state
+  SolveReport solve;       // totals over all solves; residual and convergence of the last
   std::vector<StepReport> steps;
   double elastic_energy = 0.0;  // J, springs
   double bending_energy = 0.0;  // J

@@ -2,8 +2,8 @@
 // Scene files: the JSON that describes one reproducible membra run. Read and fully validated
 // here; values are converted from the scene's units (mm, MPa, g/cm^3, s, N) to SI.
 // The format is documented in docs/scene.md and docs/scene.schema.json.
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -13,6 +13,7 @@
 
 #include "membra/geometry/grid_sheet.hpp"
 #include "membra/io/input_error.hpp"
+#include "membra/model/membrane.hpp"
 #include "membra/model/pattern.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/sheet.hpp"
@@ -21,30 +22,31 @@ namespace membra {
 
 // How to simulate: the paper's K, G, T, D and the run length.
 struct SimulationSpec {
-  std::string solver = "rk4";  // integrator name
-  double gravity = 9.81;       // G, m/s^2, acting along -z
-  double dt = 1e-4;            // T, s
-  double damping = 0.0;        // D, 1/s (force -D m v on every particle)
-  long steps = 10000;           // time steps of a dynamic solver
-  long max_iterations = 500000; // iterations of the static solver
-  double tolerance = 1e-6;  // relative to k_stretch x grid spacing
+  std::string solver = "static";  // "static" (FIRE), "newton", or an integrator (rk4, ...)
+  double gravity = 9.81;          // G, m/s^2, acting along -z
+  double dt = 1e-4;               // T, s
+  double damping = 0.0;           // D, 1/s (force -D m v on every particle)
+  long steps = 10000;             // time steps of a dynamic solver
+  long max_iterations = 500000;   // iterations of the static solver
+  double tolerance = 1e-6;        // relative to k_stretch x grid spacing
   bool stop_when_converged = true;
 };
 
 // One step of the process (DESIGN.md section 2), in SI.
 struct ProtocolStep {
   enum class Kind { stretch, impregnate, release, load } kind = Kind::stretch;
-  std::string pointer;          // "/protocol/2", for messages
+  std::string pointer;  // "/protocol/2", for messages
   // stretch
   Vec2 lambda{1.0, 1.0};
+  FrameEdges hold;  // edges the frame holds
   // impregnate
   PatternPtr pattern;
   nlohmann::json pattern_json;  // as written, for stencil export
   Material resin;
-  int resin_side = +1;          // +1 top, -1 bottom
+  int resin_side = +1;  // +1 top, -1 bottom
   // release
-  int increments = 10;          // static solver: steps of the quasi-static path
-  double perturbation = 0.2e-3; // m, symmetry-breaking bump
+  int increments = 10;           // static solver: steps of the quasi-static path
+  double perturbation = 0.2e-3;  // m, symmetry-breaking bump
   std::uint64_t seed = 1;
   // load
   std::optional<double> gravity;  // m/s^2 along -z

@@ -12,7 +12,7 @@
 namespace membra {
 
 struct Membrane {
-  Sheet sheet;   // sheet.model's rest lengths and stiffnesses follow the process
+  Sheet sheet;  // sheet.model's rest lengths and stiffnesses follow the process
   State state;
 
   // Per spring.
@@ -23,23 +23,29 @@ struct Membrane {
   std::vector<double> resin_length;     // length at impregnation (the resin's rest length), m
   std::vector<double> frame_length;     // length when the release began, m
   // Per bending element.
-  std::vector<double> latex_bending;    // c of the latex alone, J
-  std::vector<double> resin_bending;    // c of the resin alone, J
-  std::vector<double> bending_fraction; // share inside resin
+  std::vector<double> latex_bending;     // c of the latex alone, J
+  std::vector<double> resin_bending;     // c of the resin alone, J
+  std::vector<double> bending_fraction;  // share inside resin
 
-  std::vector<int> frame;     // particles the frame holds (empty once released)
-  Vec2 stretch{1.0, 1.0};     // frame stretch ratios applied so far
-  int resin_side = +1;        // +1 resin on top (z > 0 face), -1 on the bottom
-  bool releasing = false;     // the release has begun: latex rest lengths follow release_level
-  double release_level = 1.0; // 1 = latex relaxed at its frame length, 0 = back to natural
+  std::vector<int> frame;      // particles the frame holds (empty once released)
+  Vec2 stretch{1.0, 1.0};      // frame stretch ratios applied so far
+  int resin_side = +1;         // +1 resin on top (z > 0 face), -1 on the bottom
+  bool releasing = false;      // the release has begun: latex rest lengths follow release_level
+  double release_level = 1.0;  // 1 = latex relaxed at its frame length, 0 = back to natural
 };
 
 // Wraps a freshly built sheet (at rest, nothing pinned by the frame).
 Membrane make_membrane(Sheet sheet);
 
-// stretch: maps positions by (lx, ly) and pins the outer boundary rows and columns to the frame.
+// Which edges of the sheet the frame holds.
+struct FrameEdges {
+  bool left = true, right = true, bottom = true, top = true;
+};
+
+// stretch: maps positions by (lx, ly) and pins the held edges to the frame (all four by
+// default; only left and right for a uniaxial stretch whose free sides may contract).
 // Requires lx, ly > 0. Returns the number of frame particles.
-int stretch_frame(Membrane& m, double lx, double ly);
+int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges = {});
 
 // impregnate: springs and bending elements inside `pattern` (frame coordinates, evaluated at
 // the current positions) become a latex-resin composite whose resin part is at rest at its

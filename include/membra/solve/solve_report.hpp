@@ -2,7 +2,6 @@
 // What every solver reports about a run.
 #include <string>
 
-
 namespace membra {
 
 struct SolveReport {

@@ -10,10 +10,10 @@
 namespace membra {
 
 struct StaticOptions {
-  double tolerance = 1e-6;     // converged when max |static force| <= tolerance x force_scale
-  double force_scale = 1.0;    // N, normally k_stretch x grid spacing
+  double tolerance = 1e-6;   // converged when max |static force| <= tolerance x force_scale
+  double force_scale = 1.0;  // N, normally k_stretch x grid spacing
   long max_iterations = 500000;
-  int check_every = 25;        // iterations between convergence checks and progress calls
+  int check_every = 25;  // iterations between convergence checks and progress calls
   std::function<void(const Progress&)> progress;
 };
 
