@@ -144,6 +144,13 @@ std::vector<int> rigid_gauge(const Points& x) {
 
 }  // namespace
 
+Eigen::SparseMatrix<double> potential_hessian(const Model& model, const Points& x) {
+  std::vector<int> dof(static_cast<size_t>(x.size()));
+  for (size_t k = 0; k < dof.size(); ++k) dof[k] = static_cast<int>(k);
+  HessianAssembler assembler(model, dof, static_cast<int>(dof.size()));
+  return assembler.assemble(x, 0.0);
+}
+
 SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   auto seconds = [&] {

@@ -7,6 +7,8 @@
 // is ~1e4x softer than stretching.
 #include <functional>
 
+#include <Eigen/SparseCore>
+
 #include "membra/model/model.hpp"
 #include "membra/solve/solve_report.hpp"
 
@@ -18,6 +20,9 @@ struct NewtonOptions {
   long max_iterations = 500;
   std::function<void(const Progress&)> progress;
 };
+
+// Hessian of the potential energy at x over all 3N coordinates (pins ignored), N/m.
+Eigen::SparseMatrix<double> potential_hessian(const Model& model, const Points& x);
 
 // Moves the free particles of `state` to a nearby stable equilibrium (velocities set to zero).
 // Never throws on failure: the report says what happened.
