@@ -55,7 +55,16 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
     j["shape"] = {{"height", r.shape.height / units::mm},
                   {"z_range", r.shape.z_range / units::mm},
                   {"bbox_min", mm3(r.shape.bbox_min)},
-                  {"bbox_max", mm3(r.shape.bbox_max)}};
+                  {"bbox_max", mm3(r.shape.bbox_max)},
+                  {"form", r.form}};
+    const double per_mm2 = units::mm * units::mm;  // 1/m^2 to 1/mm^2
+    j["curvature"] = {{"total", r.curvature.total},
+                      {"positive", r.curvature.positive},
+                      {"negative", r.curvature.negative},
+                      {"boundary", r.curvature.boundary},
+                      {"min_density", r.curvature.min_density * per_mm2},
+                      {"max_density", r.curvature.max_density * per_mm2},
+                      {"classification", r.form}};
   }
   j["units"] = {{"residual", "N"},
                 {"residual_relative", "1 (residual / (k_stretch x grid spacing))"},
@@ -66,6 +75,12 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                 {"energy_parts", "J"},
                 {"shape.height", "mm (extent normal to the best-fit plane)"},
                 {"shape.z_range", "mm"},
+                {"curvature.total", "rad (sum of interior angle defects = integral of K dA)"},
+                {"curvature.positive", "rad"},
+                {"curvature.negative", "rad"},
+                {"curvature.boundary", "rad (sum of pi - angle sum at boundary vertices)"},
+                {"curvature.min_density", "1/mm^2"},
+                {"curvature.max_density", "1/mm^2"},
                 {"shape.bbox_min", "mm"},
                 {"shape.bbox_max", "mm"},
                 {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};

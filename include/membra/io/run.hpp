@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "membra/io/scene.hpp"
+#include "membra/measure/curvature.hpp"
 #include "membra/measure/shape.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/solve/solve_report.hpp"
@@ -35,6 +36,8 @@ struct RunResult {
   double gravity_energy = 0.0;  // J
   double kinetic_energy = 0.0;  // J
   ShapeSummary shape;
+  GaussianCurvature curvature;  // densities smoothed on the grid
+  std::string form;             // classify_form(curvature)
 };
 
 // Builds the membrane of a scene without running it (what `membra validate` checks). Throws
