@@ -79,9 +79,12 @@ int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int s
     ++count;
     m.resin_fraction[s] = std::max(m.resin_fraction[s], f);
     m.resin_length[s] = (x.col(sp.b[s]) - x.col(sp.a[s])).norm();
-    m.resin_stiffness[s] = sp.family[s] == SpringFamily::shear  ? kr.shear
-                           : sp.family[s] == SpringFamily::flex ? kr.flex
-                                                                : kr.stretch;
+    // Same family and the same share of a cell as the latex spring (half on the boundary).
+    const LatticeStiffness& kl = m.sheet.stiffness;
+    const bool shear = sp.family[s] == SpringFamily::shear;
+    const bool flex = sp.family[s] == SpringFamily::flex;
+    const double share = m.latex_stiffness[s] / (shear ? kl.shear : flex ? kl.flex : kl.stretch);
+    m.resin_stiffness[s] = share * (shear ? kr.shear : flex ? kr.flex : kr.stretch);
     update_spring(m, s);
   }
   Bending& b = model.bending;

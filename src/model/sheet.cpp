@@ -18,6 +18,12 @@ LatticeStiffness lattice_stiffness(const SheetOptions& o) {
   return k;
 }
 
+// Active cells among those touching node (i, j) (0..4).
+int cells_around(const GridSheet& g, int i, int j) {
+  return g.cell_active(i - 1, j - 1) + g.cell_active(i, j - 1) + g.cell_active(i - 1, j) +
+         g.cell_active(i, j);
+}
+
 void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const LatticeStiffness& k,
                          Model& m) {
   auto connect = [&](int pa, int pb, double kk, SpringFamily fam) {
@@ -29,10 +35,14 @@ void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const Lattic
       const int p = g.particle(i, j);
       if (p < 0) continue;
       if (o.stretch) {
-        if (const int q = g.particle(i + 1, j); q >= 0)
-          connect(p, q, k.stretch, SpringFamily::stretch);
-        if (const int q = g.particle(i, j + 1); q >= 0)
-          connect(p, q, k.stretch, SpringFamily::stretch);
+        // An edge carries the membrane of the cells beside it: half a cell's worth on the
+        // boundary, so the sheet's stiffness is k per unit width up to its edges.
+        const int right = g.cell_active(i, j - 1) + g.cell_active(i, j);
+        const int up = g.cell_active(i - 1, j) + g.cell_active(i, j);
+        if (const int q = g.particle(i + 1, j); q >= 0 && right > 0)
+          connect(p, q, 0.5 * right * k.stretch, SpringFamily::stretch);
+        if (const int q = g.particle(i, j + 1); q >= 0 && up > 0)
+          connect(p, q, 0.5 * up * k.stretch, SpringFamily::stretch);
       }
       if (o.shear && g.cell_active(i, j)) {
         connect(p, g.particle(i + 1, j + 1), k.shear, SpringFamily::shear);
@@ -40,9 +50,9 @@ void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const Lattic
       }
       if (o.flex) {
         if (g.particle(i + 1, j) >= 0 && g.particle(i + 2, j) >= 0)
-          connect(p, g.particle(i + 2, j), k.flex, SpringFamily::flex);
+          connect(p, g.particle(i + 2, j), 0.25 * cells_around(g, i + 1, j) * k.flex, SpringFamily::flex);
         if (g.particle(i, j + 1) >= 0 && g.particle(i, j + 2) >= 0)
-          connect(p, g.particle(i, j + 2), k.flex, SpringFamily::flex);
+          connect(p, g.particle(i, j + 2), 0.25 * cells_around(g, i, j + 1) * k.flex, SpringFamily::flex);
       }
     }
   }
@@ -58,7 +68,9 @@ void add_bending_elements(const GridSheet& g, double d, Bending& out) {
       for (const auto& dir : dirs) {
         const int a = g.particle(i - dir[0], j - dir[1]), b = g.particle(i + dir[0], j + dir[1]);
         if (a < 0 || b < 0) continue;
-        const double factor = (dir[0] != 0 && dir[1] != 0) ? 1.0 / 6.0 : 1.0 / 3.0;
+        // c = D/3 (axes) or D/6 (diagonals) per node area; a boundary node has less area.
+        const double factor = ((dir[0] != 0 && dir[1] != 0) ? 1.0 / 6.0 : 1.0 / 3.0) *
+                              0.25 * cells_around(g, i, j);
         out.add(a, p, b, factor * d, factor);
       }
     }

@@ -52,13 +52,15 @@ TEST(Membrane, ImpregnatedSpringFollowsTheCompositeRule) {
   for (int i = 0; i < s.size(); ++i) {
     if (s.family[i] != SpringFamily::stretch) continue;
     const double f = m.resin_fraction[i];
-    const double kl = m.latex_stiffness[i], kin = kr.stretch + kl;
+    const double kl = m.latex_stiffness[i];
+    const double krs = kr.stretch * kl / m.sheet.stiffness.stretch;  // half a cell on the boundary
+    const double kin = krs + kl;
     if (f == 1.0) {
       // Fully inside: resin and latex in parallel; rest length between the stretched and the
       // natural length, weighted by stiffness.
       EXPECT_NEAR(s.stiffness[i], kin, 1e-9 * kin);
       const double l_now = (m.state.x.col(s.b[i]) - m.state.x.col(s.a[i])).norm();
-      EXPECT_NEAR(s.rest_length[i], (kr.stretch * l_now + kl * m.natural_length[i]) / kin, 1e-15);
+      EXPECT_NEAR(s.rest_length[i], (krs * l_now + kl * m.natural_length[i]) / kin, 1e-15);
     } else if (f > 0.0) {
       EXPECT_NEAR(s.stiffness[i], 1.0 / ((1 - f) / kl + f / kin), 1e-9 * kin);
     } else {
