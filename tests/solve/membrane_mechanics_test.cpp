@@ -1,7 +1,10 @@
 // The lattice as a continuum: uniaxial tension gives E t and nu = 1/3 (DESIGN.md section 3),
 // and a compressed strip buckles at Euler's load with the plate bending stiffness.
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+
+#include <Eigen/Eigenvalues>
 
 #include <gtest/gtest.h>
 
@@ -41,6 +44,50 @@ TEST(Mechanics, UniaxialTensionGivesEtAndPoissonOneThird) {
   EXPECT_NEAR(et / membrane_stiffness_from_stretch(s.stiffness.stretch), 1.0, 0.02);
   EXPECT_NEAR(et / (1.5e6 * 0.5e-3), 1.0, 0.02);
   EXPECT_NEAR(-ey / ex, 1.0 / 3.0, 0.02);
+}
+
+}  // namespace
+}  // namespace membra
+
+namespace membra {
+namespace {
+
+// Smallest out-of-plane stiffness eigenvalue (z coordinates of free particles) of a strip
+// compressed flat by `strain` between pinned ends, after relaxing it in plane.
+double smallest_out_of_plane_eigenvalue(const Sheet& s, double strain, double length) {
+  Model m = s.model;
+  State st = State::at_rest(m);
+  const int nx = s.grid.nx();
+  for (int j = 0; j < s.grid.ny(); ++j) st.x(0, s.grid.particle(nx - 1, j)) -= strain * length;
+  NewtonOptions no;
+  no.force_scale = s.stiffness.stretch * s.grid.hx();
+  no.tolerance = 1e-12;
+  solve_newton(m, st, no);  // stays exactly flat: nothing pushes out of plane
+  const Eigen::MatrixXd h = Eigen::MatrixXd(potential_hessian(m, st.x));
+  std::vector<int> z;
+  for (int p = 0; p < m.num_particles(); ++p)
+    if (!m.pinned(p)) z.push_back(3 * p + 2);
+  Eigen::MatrixXd hz(z.size(), z.size());
+  for (size_t a = 0; a < z.size(); ++a)
+    for (size_t b = 0; b < z.size(); ++b) hz(a, b) = h(z[a], z[b]);
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(hz).eigenvalues()(0);
+}
+
+TEST(Mechanics, CompressedStripBucklesAtTheEulerStrain) {
+  const double length = 0.1, width = 0.01, t = 0.5e-3;
+  Sheet s = build_sheet({length, width, 41, 5}, SheetOptions{});
+  apply_pins({{PinSpec::Kind::edge, "left"}, {PinSpec::Kind::edge, "right"}}, s.grid, s.model);
+  const double expected = std::numbers::pi * std::numbers::pi / 12.0 * (t / length) * (t / length);
+  // Bisection on the strain where the flat strip loses its out-of-plane stiffness.
+  double lo = 0.2 * expected, hi = 3.0 * expected;
+  ASSERT_GT(smallest_out_of_plane_eigenvalue(s, lo, length), 0.0);
+  ASSERT_LT(smallest_out_of_plane_eigenvalue(s, hi, length), 0.0);
+  for (int it = 0; it < 14; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (smallest_out_of_plane_eigenvalue(s, mid, length) > 0.0 ? lo : hi) = mid;
+  }
+  EXPECT_NEAR(lo / expected, 1.0, 0.10) << "critical strain " << lo << ", Euler " << expected;
+  std::printf("buckling strain %.4g, Euler (pi^2/12)(t/L)^2 = %.4g, ratio %.4f\n", lo, expected, lo / expected);
 }
 
 }  // namespace
