@@ -24,7 +24,9 @@ std::vector<bool> interior_vertices(int n, const std::vector<Triangle>& tris) {
   return inside;
 }
 
-double angle(const Vec3& u, const Vec3& v) { return std::atan2(u.cross(v).norm(), u.dot(v)); }
+double angle(const Vec3& u, const Vec3& v) {
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
 
 // Mixed Voronoi area of each vertex (Meyer et al. 2003, "Discrete differential-geometry operators
 // for triangulated 2-manifolds"): the Voronoi region inside non-obtuse triangles, and half or a
@@ -50,7 +52,8 @@ std::vector<double> mixed_areas(const Points& x, const std::vector<Triangle>& tr
         continue;
       }
       const int j = (k + 1) % 3, l = (k + 2) % 3;
-      area[t[k]] += ((p[j] - p[k]).squaredNorm() * cot[l] + (p[l] - p[k]).squaredNorm() * cot[j]) / 8.0;
+      area[t[k]] +=
+          ((p[j] - p[k]).squaredNorm() * cot[l] + (p[l] - p[k]).squaredNorm() * cot[j]) / 8.0;
     }
   }
   return area;
@@ -119,6 +122,14 @@ void smooth_density_on_grid(const GridSheet& g, GaussianCurvature& k) {
     first = false;
   }
   k.density = std::move(out);
+  // The positive and negative parts follow the smoothed field: raw defects of opposite signs on
+  // neighbouring valence-4 and valence-8 vertices would count grid noise as curvature.
+  k.positive = k.negative = 0.0;
+  for (int p = 0; p < g.num_particles(); ++p) {
+    if (!k.interior[p]) continue;
+    const double part = k.density[p] * k.area[p];
+    (part > 0.0 ? k.positive : k.negative) += part;
+  }
 }
 
 std::string classify_form(const GaussianCurvature& k, double threshold) {

@@ -50,9 +50,11 @@ void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const Lattic
       }
       if (o.flex) {
         if (g.particle(i + 1, j) >= 0 && g.particle(i + 2, j) >= 0)
-          connect(p, g.particle(i + 2, j), 0.25 * cells_around(g, i + 1, j) * k.flex, SpringFamily::flex);
+          connect(p, g.particle(i + 2, j), 0.25 * cells_around(g, i + 1, j) * k.flex,
+                  SpringFamily::flex);
         if (g.particle(i, j + 1) >= 0 && g.particle(i, j + 2) >= 0)
-          connect(p, g.particle(i, j + 2), 0.25 * cells_around(g, i, j + 1) * k.flex, SpringFamily::flex);
+          connect(p, g.particle(i, j + 2), 0.25 * cells_around(g, i, j + 1) * k.flex,
+                  SpringFamily::flex);
       }
     }
   }
@@ -69,8 +71,8 @@ void add_bending_elements(const GridSheet& g, double d, Bending& out) {
         const int a = g.particle(i - dir[0], j - dir[1]), b = g.particle(i + dir[0], j + dir[1]);
         if (a < 0 || b < 0) continue;
         // c = D/3 (axes) or D/6 (diagonals) per node area; a boundary node has less area.
-        const double factor = ((dir[0] != 0 && dir[1] != 0) ? 1.0 / 6.0 : 1.0 / 3.0) *
-                              0.25 * cells_around(g, i, j);
+        const double factor =
+            ((dir[0] != 0 && dir[1] != 0) ? 1.0 / 6.0 : 1.0 / 3.0) * 0.25 * cells_around(g, i, j);
         out.add(a, p, b, factor * d, factor);
       }
     }

@@ -17,11 +17,11 @@ constexpr double kPi = std::numbers::pi;
 // Icosahedron subdivided `levels` times, projected onto a sphere of radius r.
 void icosphere(int levels, double r, Points& x, std::vector<Triangle>& tris) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                         {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  tris = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+  std::vector<Vec3> v = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                         {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  tris = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
           {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-          {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+          {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (int l = 0; l < levels; ++l) {
     std::map<std::pair<int, int>, int> mid;
     auto midpoint = [&](int a, int b) {
@@ -51,8 +51,7 @@ TEST_P(Sphere, GaussBonnetAndDensityOneOverRSquared) {
   const GaussianCurvature k = gaussian_curvature(x, tris);
   EXPECT_NEAR(k.total, 4.0 * kPi, 1e-9);  // closed surface of genus 0
   EXPECT_EQ(k.boundary, 0.0);
-  for (size_t v = 0; v < k.density.size(); ++v)
-    ASSERT_NEAR(k.density[v] * r * r, 1.0, 0.02) << v;
+  for (size_t v = 0; v < k.density.size(); ++v) ASSERT_NEAR(k.density[v] * r * r, 1.0, 0.02) << v;
   EXPECT_EQ(classify_form(k), "synclastic");
 }
 
@@ -75,7 +74,8 @@ TEST(Curvature, DiskGaussBonnetIsTwoPi) {
   Points x;
   std::vector<Triangle> tris;
   GridSheet g;
-  lifted_grid(21, [](double u, double v) { return 0.3 * std::sin(u) * std::cos(2 * v); }, x, tris, g);
+  lifted_grid(
+      21, [](double u, double v) { return 0.3 * std::sin(u) * std::cos(2 * v); }, x, tris, g);
   const GaussianCurvature k = gaussian_curvature(x, tris);
   EXPECT_NEAR(k.total + k.boundary, 2.0 * kPi, 1e-9);
 }
@@ -84,9 +84,11 @@ TEST(Curvature, PlaneIsFlat) {
   Points x;
   std::vector<Triangle> tris;
   GridSheet g;
-  lifted_grid(11, [](double u, double v) { return 0.2 * u - 0.7 * v; }, x, tris, g);
+  lifted_grid(
+      11, [](double u, double v) { return 0.2 * u - 0.7 * v; }, x, tris, g);
   const GaussianCurvature k = gaussian_curvature(x, tris);
-  for (size_t v = 0; v < k.density.size(); ++v) EXPECT_NEAR(k.angle_defect[v] * (k.interior[v] ? 1 : 0), 0.0, 1e-12);
+  for (size_t v = 0; v < k.density.size(); ++v)
+    EXPECT_NEAR(k.angle_defect[v] * (k.interior[v] ? 1 : 0), 0.0, 1e-12);
   EXPECT_EQ(classify_form(k), "developable");
 }
 
@@ -94,7 +96,8 @@ TEST(Curvature, SaddleHasMinusOneAtItsCentre) {
   Points x;
   std::vector<Triangle> tris;
   GridSheet g;
-  lifted_grid(201, [](double u, double v) { return u * v; }, x, tris, g);
+  lifted_grid(
+      201, [](double u, double v) { return u * v; }, x, tris, g);
   GaussianCurvature k = gaussian_curvature(x, tris);
   // Raw defects alternate with the vertex valence; the grid filter gives K = -1.
   EXPECT_NEAR(k.density[g.particle(100, 100)] + k.density[g.particle(101, 100)], -2.0, 0.05);
@@ -109,7 +112,8 @@ TEST(Curvature, CylinderHasNoGaussianAndHalfOverRMeanCurvature) {
   std::vector<Triangle> tris;
   GridSheet g;
   // The sheet wrapped isometrically around a cylinder of radius r with axis along y.
-  lifted_grid(81, [](double, double) { return 0.0; }, x, tris, g);
+  lifted_grid(
+      81, [](double, double) { return 0.0; }, x, tris, g);
   for (Eigen::Index p = 0; p < x.cols(); ++p) {
     const double u = x(0, p);
     x(0, p) = r * std::sin(u / r);

@@ -87,7 +87,8 @@ TEST(Mechanics, CompressedStripBucklesAtTheEulerStrain) {
     (smallest_out_of_plane_eigenvalue(s, mid, length) > 0.0 ? lo : hi) = mid;
   }
   EXPECT_NEAR(lo / expected, 1.0, 0.10) << "critical strain " << lo << ", Euler " << expected;
-  std::printf("buckling strain %.4g, Euler (pi^2/12)(t/L)^2 = %.4g, ratio %.4f\n", lo, expected, lo / expected);
+  std::printf("buckling strain %.4g, Euler (pi^2/12)(t/L)^2 = %.4g, ratio %.4f\n", lo, expected,
+              lo / expected);
 }
 
 }  // namespace

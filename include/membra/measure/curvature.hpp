@@ -14,15 +14,15 @@
 namespace membra {
 
 struct GaussianCurvature {
-  std::vector<double> angle_defect;  // integrated curvature per vertex, rad (dimensionless)
-  std::vector<double> area;          // mixed Voronoi area (Meyer et al. 2003), m^2
+  std::vector<double> angle_defect;      // integrated curvature per vertex, rad (dimensionless)
+  std::vector<double> area;              // mixed Voronoi area (Meyer et al. 2003), m^2
   std::vector<double> area_barycentric;  // a third of the incident triangles' area, m^2
-  std::vector<double> density;       // angle_defect / area at interior vertices, 1/m^2; 0 elsewhere
-  std::vector<bool> interior;        // false on the boundary (and for unused vertices)
-  double total = 0.0;                // sum over interior vertices, rad
-  double positive = 0.0;             // sum of the positive interior defects, rad
-  double negative = 0.0;             // sum of the negative interior defects (<= 0), rad
-  double boundary = 0.0;             // sum of the boundary vertices' pi - sum, rad
+  std::vector<double> density;  // angle_defect / area at interior vertices, 1/m^2; 0 elsewhere
+  std::vector<bool> interior;   // false on the boundary (and for unused vertices)
+  double total = 0.0;           // sum over interior vertices, rad
+  double positive = 0.0;        // sum of the positive interior defects, rad
+  double negative = 0.0;        // sum of the negative interior defects (<= 0), rad
+  double boundary = 0.0;        // sum of the boundary vertices' pi - sum, rad
   double min_density = 0.0, max_density = 0.0;  // over interior vertices, 1/m^2
 };
 
@@ -32,7 +32,8 @@ GaussianCurvature gaussian_curvature(const Points& x, const std::vector<Triangle
 // Replaces the densities of a grid sheet's mesh by area-weighted averages over each vertex's
 // 3 x 3 neighbourhood (weights 4, 2, 1: a bilinear filter). membra's grid alternates vertices of
 // valence 8 and 4, and single-vertex defects alternate with them (on z = xy: -2 and 0 where
-// K = -1); the filter removes the alternation and keeps smooth fields. Totals are unchanged.
+// K = -1); the filter removes the alternation and keeps smooth fields. `positive` and
+// `negative` are recomputed from the smoothed densities; `total` stays the exact raw sum.
 void smooth_density_on_grid(const GridSheet& grid, GaussianCurvature& k);
 
 // Form class from the interior defects (rule in docs/measures.md): "developable" when
