@@ -91,13 +91,17 @@ double kinetic_energy(const Model& model, const Points& v) {
   return e;
 }
 
-double max_residual_force(const Model& model, const Points& x) {
-  Points f;
-  compute_static_forces(model, x, f);
+double max_free_force(const Model& model, const Points& f) {
   double r = 0.0;
   for (int p = 0; p < model.num_particles(); ++p)
     if (!model.pinned(p)) r = std::max(r, f.col(p).norm());
   return r;
+}
+
+double max_residual_force(const Model& model, const Points& x) {
+  Points f;
+  compute_static_forces(model, x, f);
+  return max_free_force(model, f);
 }
 
 }  // namespace membra

@@ -66,11 +66,7 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
   }
   r.converged = r.residual_relative <= o.tolerance;
   r.wall_seconds = seconds();
-  std::ostringstream msg;
-  msg << o.method << ": " << (r.converged ? "converged" : "not converged") << " after "
-      << r.iterations << " steps, residual " << r.residual_relative << " (tolerance " << o.tolerance
-      << ")";
-  r.message = msg.str();
+  r.message = summary_message(o.method, r, o.tolerance, "steps");
   return r;
 }
 

@@ -174,12 +174,7 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
 
   Points f;
   SolveReport r;
-  auto residual = [&](const Points& forces) {
-    double res = 0.0;
-    for (int p = 0; p < n; ++p)
-      if (!model.pinned(p)) res = std::max(res, forces.col(p).norm());
-    return res;
-  };
+  auto residual = [&](const Points& forces) { return max_free_force(model, forces); };
   compute_static_forces(model, x, f);
   ++r.force_passes;
   double energy = potential_energy(model, x);
@@ -253,12 +248,7 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   r.converged = r.residual_relative <= o.tolerance;
   state.v.setZero(3, n);
   r.wall_seconds = seconds();
-  if (r.message.empty() || r.converged) {
-    std::ostringstream msg;
-    msg << "newton: " << (r.converged ? "converged" : "not converged") << " after " << r.iterations
-        << " iterations, residual " << r.residual_relative << " (tolerance " << o.tolerance << ")";
-    r.message = msg.str();
-  }
+  if (r.message.empty() || r.converged) r.message = summary_message("newton", r, o.tolerance);
   return r;
 }
 

@@ -90,9 +90,7 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
     ++r.force_passes;
     if (it % o.check_every != 0 && it != o.max_iterations) continue;
 
-    double res = 0.0;
-    for (int p = 0; p < n; ++p)
-      if (!model.pinned(p)) res = std::max(res, f.col(p).norm());
+    const double res = max_free_force(model, f);
     r.residual = res;
     r.residual_relative = res / o.force_scale;
     if (!std::isfinite(res)) {
@@ -109,19 +107,14 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
     if (r.residual_relative <= o.tolerance) break;
   }
   if (r.iterations == 0) {
-    double res = 0.0;
-    for (int p = 0; p < n; ++p)
-      if (!model.pinned(p)) res = std::max(res, f.col(p).norm());
+    const double res = max_free_force(model, f);
     r.residual = res;
     r.residual_relative = res / o.force_scale;
   }
   r.converged = r.residual_relative <= o.tolerance;
   state.v.setZero(3, n);
   r.wall_seconds = seconds();
-  std::ostringstream msg;
-  msg << "static: " << (r.converged ? "converged" : "not converged") << " after " << r.iterations
-      << " iterations, residual " << r.residual_relative << " (tolerance " << o.tolerance << ")";
-  r.message = msg.str();
+  r.message = summary_message("static", r, o.tolerance);
   return r;
 }
 

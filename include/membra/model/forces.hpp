@@ -27,5 +27,7 @@ double kinetic_energy(const Model& model, const Points& v);
 
 // Equilibrium residual: the largest |static force| over free particles (N).
 double max_residual_force(const Model& model, const Points& x);
+// The largest |f| over free particles of an already computed force array (N).
+double max_free_force(const Model& model, const Points& f);
 
 }  // namespace membra

@@ -15,6 +15,10 @@ struct SolveReport {
   double wall_seconds = 0.0;
 };
 
+// "NAME: converged after N iterations, residual R (tolerance T)".
+std::string summary_message(const std::string& name, const SolveReport& r, double tolerance,
+                            const char* unit = "iterations");
+
 // Progress of a long run, passed to a callback every so often.
 struct Progress {
   std::string stage;  // what is being solved ("release 3/10"), set by the caller of a solver
