@@ -1,4 +1,7 @@
 // membra: the command-line tool. Thin: it parses arguments, calls the library and reports.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -9,9 +12,11 @@
 #include "membra/io/input_error.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/output_set.hpp"
+#include "membra/io/ply.hpp"
 #include "membra/io/report.hpp"
 #include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/render/renderer.hpp"
 #include "membra/version.hpp"
 #include "progress_bar.hpp"
 
@@ -34,8 +39,12 @@ int cmd_validate(const std::string& scene_file, const std::vector<std::string>& 
   return kOk;
 }
 
+struct RunOptions {
+  std::vector<double> curvature_range;  // [lo, hi] in 1/mm^2, or empty for automatic
+};
+
 int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
-            std::string out_dir, bool quiet) {
+            std::string out_dir, bool quiet, const RunOptions& opts) {
   const membra::Scene scene = membra::load_scene(scene_file, sets);
   try {
     (void)membra::prepare_scene(scene);  // fail on bad input before touching the disk
@@ -58,13 +67,44 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
               << "membra: wrote only " << (out.dir() / "report.json").string() << "\n";
     return kDiverged;
   }
-  out.add("final.obj", [&](std::ostream& os) {
-    membra::write_obj(os, r.prepared.membrane.state.x, r.prepared.membrane.sheet.triangles);
+  const auto& mesh = r.prepared.membrane.sheet;
+  const auto& x = r.prepared.membrane.state.x;
+  out.add("final.obj", [&](std::ostream& os) { membra::write_obj(os, x, mesh.triangles); });
+  // Curvature colours on a symmetric range, so green is flat, red synclastic, blue anticlastic;
+  // at least +-1e-6 1/mm^2 (radius 1 m), so round-off on a flat sheet stays green.
+  const double per_mm2 = 1e-6;  // 1/m^2 to 1/mm^2
+  double k_lo = -std::max({std::abs(r.curvature.min_density) * per_mm2,
+                           std::abs(r.curvature.max_density) * per_mm2, 1e-6});
+  double k_hi = -k_lo;
+  if (opts.curvature_range.size() == 2)
+    k_lo = opts.curvature_range[0], k_hi = opts.curvature_range[1];
+  std::vector<membra::Rgb> colors;
+  std::vector<double> k_mm;
+  for (double k : r.curvature.density) {
+    k_mm.push_back(k * per_mm2);
+    colors.push_back(membra::colormap(k * per_mm2, k_lo, k_hi));
+  }
+  out.add("final.ply", [&](std::ostream& os) {
+    membra::write_ply(os, x, mesh.triangles, colors, {{"gaussian_curvature", k_mm}});
   });
+  std::string render_note;
+  try {
+    membra::Renderer renderer(1200, 900);
+    const membra::Legend legend{"Gaussian curvature", "1/mm^2", k_lo, k_hi};
+    const membra::Image img = renderer.render(x, mesh.triangles, colors, membra::Camera{}, &legend);
+    const std::vector<std::uint8_t> png = membra::encode_png(img);
+    out.add("curvature.png", [&](std::ostream& os) {
+      os.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    });
+  } catch (const membra::RenderError& e) {
+    render_note = e.what();
+    std::cerr << "membra: warning: no PNG renders: " << e.what() << "\n";
+  }
   out.commit();
   if (!quiet) {
     std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"
-              << "results in " << out.dir().string() << "/ (final.obj, report.json)\n";
+              << "results in " << out.dir().string() << "/ (final.obj, final.ply, report.json"
+              << (render_note.empty() ? ", curvature.png" : "") << ")\n";
   }
   return kOk;
 }
@@ -85,6 +125,13 @@ int main(int argc, char** argv) {
   run->add_option("scene", scene_file, "Scene file (JSON)")->required();
   run->add_option("--out,-o", out_dir, "Output directory (default: out/<scene name>)");
   run->add_option("--set", sets, set_help)->type_name("PATH=VALUE");
+  RunOptions run_opts;
+  run->add_option(
+         "--curvature-range", run_opts.curvature_range,
+         "Colour range of curvature.png and final.ply, 1/mm^2 (default: symmetric, automatic)")
+      ->expected(2)
+      ->allow_extra_args(false)
+      ->type_name("LO HI");
   run->add_flag("--quiet,-q", quiet, "No progress bar or summary");
 
   auto* validate = app.add_subcommand("validate", "Check a scene without running it");
@@ -99,7 +146,12 @@ int main(int argc, char** argv) {
     return code == 0 ? kOk : kBadInput;
   }
   try {
-    if (*run) return cmd_run(scene_file, sets, out_dir, quiet);
+    if (*run) {
+      if (run_opts.curvature_range.size() == 2 &&
+          !(run_opts.curvature_range[0] < run_opts.curvature_range[1]))
+        throw membra::InputError("--curvature-range", "LO must be below HI");
+      return cmd_run(scene_file, sets, out_dir, quiet, run_opts);
+    }
     if (*validate) return cmd_validate(scene_file, sets, quiet);
   } catch (const membra::InputError& e) {
     std::cerr << "membra: error: " << e.what() << "\n";

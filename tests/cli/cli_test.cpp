@@ -74,6 +74,9 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   const Output o = membra_cli("run " + kExp1 + sets() + " --quiet --out " + out.string());
   ASSERT_EQ(o.code, 0) << o.text;
   ASSERT_TRUE(fs::exists(out / "final.obj"));
+  ASSERT_TRUE(fs::exists(out / "final.ply"));
+  ASSERT_TRUE(fs::exists(out / "curvature.png"));
+  EXPECT_GT(fs::file_size(out / "curvature.png"), 10000u);
   std::ifstream in(out / "report.json");
   const json report = json::parse(in);
 

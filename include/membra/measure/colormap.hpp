@@ -1,0 +1,14 @@
+#pragma once
+// The colour map of the paper's figures: blue at lo, green at the midpoint, red at hi, linear in
+// between and clamped outside [lo, hi].
+#include <Eigen/Core>
+
+namespace membra {
+
+using Rgb = Eigen::Vector3f;  // components in [0, 1]
+
+// Colour of value v on the range [lo, hi] (lo < hi): (0,0,1) at lo, (0,1,0) at the midpoint,
+// (1,0,0) at hi; values outside are clamped to the end colours.
+Rgb colormap(double v, double lo, double hi);
+
+}  // namespace membra

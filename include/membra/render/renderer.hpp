@@ -1,0 +1,68 @@
+#pragma once
+// Offscreen rendering of a coloured triangle mesh to an RGB image, with a colour-bar legend.
+// Uses OpenGL 3.3 core through EGL's surfaceless platform (Mesa), so it needs no display; the
+// viewer can draw with the same code into its window.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "membra/geometry/triangulation.hpp"
+#include "membra/geometry/vec.hpp"
+#include "membra/measure/colormap.hpp"
+
+namespace membra {
+
+class RenderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Where the camera looks from: azimuth around +z from +x, elevation above the xy-plane (deg).
+struct Camera {
+  double azimuth = -60.0;
+  double elevation = 35.0;
+  double margin = 1.1;  // the bounding sphere fills 1/margin of the shorter image side
+};
+
+// A colour bar: the map's range and what it shows.
+struct Legend {
+  std::string title;  // e.g. "Gaussian curvature"
+  std::string unit;   // e.g. "1/mm^2"
+  double lo = 0.0, hi = 1.0;
+};
+
+// An RGB image, rows from the top.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+  Rgb pixel(int x, int y) const;
+};
+
+class Renderer {
+ public:
+  // Creates a headless OpenGL context and a width x height framebuffer. Throws RenderError when
+  // no EGL/OpenGL 3.3 is available.
+  Renderer(int width, int height);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Shaded mesh (positions in any unit, per-vertex colours) on a white background, orthographic
+  // from the camera, with the legend on the right when given.
+  Image render(const Points& x, const std::vector<Triangle>& triangles,
+               const std::vector<Rgb>& colors, const Camera& camera, const Legend* legend);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The image encoded as PNG bytes.
+std::vector<std::uint8_t> encode_png(const Image& image);
+// Writes an image as PNG. Throws RenderError naming the file on failure.
+void write_png(const std::filesystem::path& file, const Image& image);
+
+}  // namespace membra

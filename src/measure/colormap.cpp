@@ -1,0 +1,17 @@
+#include "membra/measure/colormap.hpp"
+
+#include <algorithm>
+
+namespace membra {
+
+Rgb colormap(double v, double lo, double hi) {
+  const double t = hi > lo ? std::clamp((v - lo) / (hi - lo), 0.0, 1.0) : 0.5;
+  if (t <= 0.5) {
+    const float s = static_cast<float>(2.0 * t);
+    return {0.0f, s, 1.0f - s};
+  }
+  const float s = static_cast<float>(2.0 * t - 1.0);
+  return {s, 1.0f - s, 0.0f};
+}
+
+}  // namespace membra
