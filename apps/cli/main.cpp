@@ -16,6 +16,7 @@
 #include "membra/io/report.hpp"
 #include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/measure/stress.hpp"
 #include "membra/render/renderer.hpp"
 #include "membra/version.hpp"
 #include "progress_bar.hpp"
@@ -70,32 +71,36 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   const auto& mesh = r.prepared.membrane.sheet;
   const auto& x = r.prepared.membrane.state.x;
   out.add("final.obj", [&](std::ostream& os) { membra::write_obj(os, x, mesh.triangles); });
-  // Curvature colours on a symmetric range, so green is flat, red synclastic, blue anticlastic;
-  // at least +-1e-6 1/mm^2 (radius 1 m), so round-off on a flat sheet stays green.
-  const double per_mm2 = 1e-6;  // 1/m^2 to 1/mm^2
-  double k_lo = -std::max({std::abs(r.curvature.min_density) * per_mm2,
-                           std::abs(r.curvature.max_density) * per_mm2, 1e-6});
-  double k_hi = -k_lo;
+  // Colours on ranges symmetric about 0, so green is flat / unstressed: curvature red
+  // synclastic, blue anticlastic (at least +-1e-6 1/mm^2, radius 1 m); stress red tension,
+  // blue compression (at least +-1e-3 MPa).
+  std::vector<double> k_mm, stress_mpa;
+  for (double k : r.curvature.density) k_mm.push_back(k * 1e-6);  // 1/m^2 to 1/mm^2
+  for (double sv : membra::vertex_stress(mesh.model, r.stress)) stress_mpa.push_back(sv * 1e-6);
+  auto [k_lo, k_hi] = membra::symmetric_range(k_mm, 1e-6);
   if (opts.curvature_range.size() == 2)
     k_lo = opts.curvature_range[0], k_hi = opts.curvature_range[1];
-  std::vector<membra::Rgb> colors;
-  std::vector<double> k_mm;
-  for (double k : r.curvature.density) {
-    k_mm.push_back(k * per_mm2);
-    colors.push_back(membra::colormap(k * per_mm2, k_lo, k_hi));
-  }
+  const auto [s_lo, s_hi] = membra::symmetric_range(stress_mpa, 1e-3);
+  const std::vector<membra::Rgb> k_colors = membra::colorize(k_mm, k_lo, k_hi);
   out.add("final.ply", [&](std::ostream& os) {
-    membra::write_ply(os, x, mesh.triangles, colors, {{"gaussian_curvature", k_mm}});
+    membra::write_ply(os, x, mesh.triangles, k_colors,
+                      {{"gaussian_curvature", k_mm}, {"stress", stress_mpa}});
   });
   std::string render_note;
   try {
     membra::Renderer renderer(1200, 900);
-    const membra::Legend legend{"Gaussian curvature", "1/mm^2", k_lo, k_hi};
-    const membra::Image img = renderer.render(x, mesh.triangles, colors, membra::Camera{}, &legend);
-    const std::vector<std::uint8_t> png = membra::encode_png(img);
-    out.add("curvature.png", [&](std::ostream& os) {
-      os.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-    });
+    auto picture = [&](const std::string& file, const std::vector<membra::Rgb>& colors,
+                       const membra::Legend& legend) {
+      const auto png =
+          membra::encode_png(renderer.render(x, mesh.triangles, colors, membra::Camera{}, &legend));
+      out.add(file, [png](std::ostream& os) {
+        os.write(reinterpret_cast<const char*>(png.data()),
+                 static_cast<std::streamsize>(png.size()));
+      });
+    };
+    picture("curvature.png", k_colors, {"Gaussian curvature", "1/mm^2", k_lo, k_hi});
+    picture("stress.png", membra::colorize(stress_mpa, s_lo, s_hi),
+            {"Stress (tension red)", "MPa", s_lo, s_hi});
   } catch (const membra::RenderError& e) {
     render_note = e.what();
     std::cerr << "membra: warning: no PNG renders: " << e.what() << "\n";
@@ -104,7 +109,7 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   if (!quiet) {
     std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"
               << "results in " << out.dir().string() << "/ (final.obj, final.ply, report.json"
-              << (render_note.empty() ? ", curvature.png" : "") << ")\n";
+              << (render_note.empty() ? ", curvature.png, stress.png" : "") << ")\n";
   }
   return kOk;
 }

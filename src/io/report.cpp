@@ -65,25 +65,30 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                       {"min_density", r.curvature.min_density * per_mm2},
                       {"max_density", r.curvature.max_density * per_mm2},
                       {"classification", r.form}};
+    j["stress"] = {{"min", r.stress.min_stress / units::MPa},
+                   {"max", r.stress.max_stress / units::MPa}};
   }
-  j["units"] = {{"residual", "N"},
-                {"residual_relative", "1 (residual / (k_stretch x grid spacing))"},
-                {"wall_seconds", "s"},
-                {"simulated_seconds", "s"},
-                {"stiffness", "N/mm"},
-                {"energy", "J (elastic + bending + gravitational potential)"},
-                {"energy_parts", "J"},
-                {"shape.height", "mm (extent normal to the best-fit plane)"},
-                {"shape.z_range", "mm"},
-                {"curvature.total", "rad (sum of interior angle defects = integral of K dA)"},
-                {"curvature.positive", "rad"},
-                {"curvature.negative", "rad"},
-                {"curvature.boundary", "rad (sum of pi - angle sum at boundary vertices)"},
-                {"curvature.min_density", "1/mm^2"},
-                {"curvature.max_density", "1/mm^2"},
-                {"shape.bbox_min", "mm"},
-                {"shape.bbox_max", "mm"},
-                {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};
+  j["units"] = {
+      {"residual", "N"},
+      {"residual_relative", "1 (residual / (k_stretch x grid spacing))"},
+      {"wall_seconds", "s"},
+      {"simulated_seconds", "s"},
+      {"stiffness", "N/mm"},
+      {"energy", "J (elastic + bending + gravitational potential)"},
+      {"energy_parts", "J"},
+      {"shape.height", "mm (extent normal to the best-fit plane)"},
+      {"shape.z_range", "mm"},
+      {"curvature.total", "rad (sum of interior angle defects = integral of K dA)"},
+      {"curvature.positive", "rad"},
+      {"curvature.negative", "rad"},
+      {"curvature.boundary", "rad (sum of pi - angle sum at boundary vertices)"},
+      {"curvature.min_density", "1/mm^2"},
+      {"stress.min", "MPa (spring force / (tributary width x sheet thickness); < 0 compression)"},
+      {"stress.max", "MPa"},
+      {"curvature.max_density", "1/mm^2"},
+      {"shape.bbox_min", "mm"},
+      {"shape.bbox_max", "mm"},
+      {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};
   return j;
 }
 

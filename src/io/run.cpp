@@ -80,7 +80,7 @@ PreparedScene prepare_scene(const Scene& scene) {
 }
 
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress) {
-  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}};
+  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}};
   Membrane& mem = r.prepared.membrane;
   State& s = mem.state;
   auto record = [&](StepReport step) {
@@ -146,6 +146,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   r.curvature = gaussian_curvature(s.x, mem.sheet.triangles);
   smooth_density_on_grid(mem.sheet.grid, r.curvature);
   r.form = classify_form(r.curvature);
+  r.stress = spring_stress(m, s.x, mem.sheet.material.thickness);
   return r;
 }
 

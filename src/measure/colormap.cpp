@@ -1,6 +1,7 @@
 #include "membra/measure/colormap.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace membra {
 
@@ -12,6 +13,19 @@ Rgb colormap(double v, double lo, double hi) {
   }
   const float s = static_cast<float>(2.0 * t - 1.0);
   return {s, 1.0f - s, 0.0f};
+}
+
+std::vector<Rgb> colorize(const std::vector<double>& values, double lo, double hi) {
+  std::vector<Rgb> out;
+  out.reserve(values.size());
+  for (double v : values) out.push_back(colormap(v, lo, hi));
+  return out;
+}
+
+std::pair<double, double> symmetric_range(const std::vector<double>& values, double floor) {
+  double m = floor;
+  for (double v : values) m = std::max(m, std::abs(v));
+  return {-m, m};
 }
 
 }  // namespace membra

@@ -1,5 +1,6 @@
 #include "membra/model/sheet.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace membra {
@@ -26,9 +27,16 @@ int cells_around(const GridSheet& g, int i, int j) {
 
 void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const LatticeStiffness& k,
                          Model& m) {
+  // Tributary width: the spacing between parallel springs of the family (h for grid lines, h/sqrt2
+  // for diagonals), scaled like the stiffness on the boundary.
+  const double h = g.hx();
   auto connect = [&](int pa, int pb, double kk, SpringFamily fam) {
     const double l0 = (m.reference.col(pb) - m.reference.col(pa)).norm();
-    m.springs.add(pa, pb, l0, kk, o.spring_damping, fam);
+    const double full = fam == SpringFamily::stretch ? k.stretch
+                        : fam == SpringFamily::shear ? k.shear
+                                                     : k.flex;
+    const double spacing = fam == SpringFamily::shear ? h / std::sqrt(2.0) : h;
+    m.springs.add(pa, pb, l0, kk, o.spring_damping, fam, full > 0.0 ? spacing * kk / full : 0.0);
   };
   for (int j = 0; j < g.ny(); ++j) {
     for (int i = 0; i < g.nx(); ++i) {
@@ -111,7 +119,7 @@ Sheet build_sheet(const GridSpec& spec, const SheetOptions& o, const NodeMask& k
   add_lattice_springs(grid, o, k, m);
   std::vector<Triangle> tris = triangulate(grid);
   if (o.bending) add_bending_elements(grid, bending_stiffness(mat), m.bending);
-  return Sheet{std::move(grid), std::move(m), std::move(tris), k};
+  return Sheet{std::move(grid), mat, std::move(m), std::move(tris), k};
 }
 
 }  // namespace membra

@@ -16,13 +16,14 @@ std::string_view to_string(SpringFamily f) {
   return "unknown";
 }
 
-int Springs::add(int pa, int pb, double l0, double k, double c, SpringFamily f) {
+int Springs::add(int pa, int pb, double l0, double k, double c, SpringFamily f, double w) {
   a.push_back(pa);
   b.push_back(pb);
   rest_length.push_back(l0);
   stiffness.push_back(k);
   damping.push_back(c);
   family.push_back(f);
+  width.push_back(w);
   return size() - 1;
 }
 
@@ -36,6 +37,7 @@ void Springs::filter(const std::vector<bool>& keep) {
     stiffness[out] = stiffness[s];
     damping[out] = damping[s];
     family[out] = family[s];
+    width[out] = width[s];
     ++out;
   }
   a.resize(out);
@@ -44,6 +46,7 @@ void Springs::filter(const std::vector<bool>& keep) {
   stiffness.resize(out);
   damping.resize(out);
   family.resize(out);
+  width.resize(out);
 }
 
 }  // namespace membra

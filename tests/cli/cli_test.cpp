@@ -77,6 +77,7 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   ASSERT_TRUE(fs::exists(out / "final.ply"));
   ASSERT_TRUE(fs::exists(out / "curvature.png"));
   EXPECT_GT(fs::file_size(out / "curvature.png"), 10000u);
+  ASSERT_TRUE(fs::exists(out / "stress.png"));
   std::ifstream in(out / "report.json");
   const json report = json::parse(in);
 
@@ -95,7 +96,9 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   // The sheet sags under gravity: height positive, energy negative (gravity wins).
   EXPECT_GT(report["shape"]["height"].get<double>(), 1.0);
   EXPECT_LT(report["energy"].get<double>(), 0.0);
-  for (const char* key : {"residual", "energy", "shape.height", "wall_seconds"})
+  EXPECT_GT(report["stress"]["max"].get<double>(), 0.0);  // a hanging sheet is in tension
+  for (const char* key :
+       {"residual", "energy", "shape.height", "wall_seconds", "curvature.total", "stress.max"})
     EXPECT_TRUE(report["units"].contains(key)) << key;
   // OBJ: 121 vertices and 200 triangles.
   std::ifstream obj(out / "final.obj");

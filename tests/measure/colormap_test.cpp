@@ -22,5 +22,13 @@ TEST(Colormap, BlueGreenRedWithClamping) {
   expect_rgb(colormap(4.0, -2.0, 6.0), 0.5f, 0.5f, 0);  // three quarters
 }
 
+TEST(Colormap, SymmetricRangeCoversEveryValueWithAFloor) {
+  EXPECT_EQ(symmetric_range({-3.0, 1.0, 2.0}, 0.5), std::make_pair(-3.0, 3.0));
+  EXPECT_EQ(symmetric_range({1e-12, -1e-13}, 1e-6), std::make_pair(-1e-6, 1e-6));
+  const auto c = colorize({0.0, 1.0}, -1.0, 1.0);
+  expect_rgb(c[0], 0, 1, 0);
+  expect_rgb(c[1], 1, 0, 0);
+}
+
 }  // namespace
 }  // namespace membra

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "membra/measure/stress.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/sheet.hpp"
@@ -44,6 +45,20 @@ TEST(Mechanics, UniaxialTensionGivesEtAndPoissonOneThird) {
   EXPECT_NEAR(et / membrane_stiffness_from_stretch(s.stiffness.stretch), 1.0, 0.02);
   EXPECT_NEAR(et / (1.5e6 * 0.5e-3), 1.0, 0.02);
   EXPECT_NEAR(-ey / ex, 1.0 / 3.0, 0.02);
+
+  // Spring stress (force over tributary width x thickness): a stretch spring along the load
+  // carries k ex h over width h, i.e. 3/4 of the continuum stress E ex (the diagonals carry the
+  // rest); tension is positive.
+  const SpringStress ss = spring_stress(m, st.x, 0.5e-3);
+  for (int i = 0; i < m.springs.size(); ++i) {
+    const auto [ia, ja] = s.grid.node(m.springs.a[i]);
+    const auto [ib, jb] = s.grid.node(m.springs.b[i]);
+    if (ia == 25 && ja == 5 && ib == 26 && jb == 5) {
+      EXPECT_NEAR(ss.stress[i] / (0.75 * 1.5e6 * ex), 1.0, 0.01);
+      EXPECT_NEAR(ss.strain[i] / ex, 1.0, 0.01);
+    }
+  }
+  EXPECT_GT(ss.max_stress, 0.0);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "membra/io/scene.hpp"
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/shape.hpp"
+#include "membra/measure/stress.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/solve/solve_report.hpp"
 
@@ -38,6 +39,7 @@ struct RunResult {
   ShapeSummary shape;
   GaussianCurvature curvature;  // densities smoothed on the grid
   std::string form;             // classify_form(curvature)
+  SpringStress stress;          // per spring, for the sheet's thickness
 };
 
 // Builds the membrane of a scene without running it (what `membra validate` checks). Throws

@@ -24,6 +24,7 @@ struct SheetOptions {
 
 struct Sheet {
   GridSheet grid;
+  Material material;  // of the sheet (latex)
   Model model;
   std::vector<Triangle> triangles;
   LatticeStiffness stiffness;  // N/m per family, as built

@@ -18,10 +18,11 @@ struct Springs {
   std::vector<double> stiffness;    // k, N/m
   std::vector<double> damping;      // c, N*s/m, acts on the relative velocity along the spring
   std::vector<SpringFamily> family;
+  std::vector<double> width;  // tributary width of sheet it stands for, m (0: unknown)
 
   int size() const { return static_cast<int>(a.size()); }
   // Appends a spring and returns its index.
-  int add(int pa, int pb, double l0, double k, double c, SpringFamily f);
+  int add(int pa, int pb, double l0, double k, double c, SpringFamily f, double w = 0.0);
   // Removes the springs for which keep[s] is false, preserving order.
   void filter(const std::vector<bool>& keep);
 };

@@ -1,0 +1,22 @@
+#pragma once
+// Strain, force and stress of every spring, and a per-vertex stress for pictures.
+#include <vector>
+
+#include "membra/model/model.hpp"
+
+namespace membra {
+
+struct SpringStress {
+  std::vector<double> strain;  // (l - l0) / l0
+  std::vector<double> force;   // k (l - l0), N; > 0 tension
+  std::vector<double> stress;  // force / (tributary width x thickness), Pa; 0 if width unknown
+  double min_stress = 0.0, max_stress = 0.0;  // Pa, over springs with a known width
+};
+
+// Per-spring measures at positions x for a sheet of the given thickness (m).
+SpringStress spring_stress(const Model& model, const Points& x, double thickness);
+
+// Mean stress of the springs meeting at each particle (Pa), for colouring.
+std::vector<double> vertex_stress(const Model& model, const SpringStress& s);
+
+}  // namespace membra
