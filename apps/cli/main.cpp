@@ -16,6 +16,7 @@
 #include "membra/io/report.hpp"
 #include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/io/stencil.hpp"
 #include "membra/measure/stress.hpp"
 #include "membra/render/renderer.hpp"
 #include "membra/version.hpp"
@@ -86,6 +87,17 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
     membra::write_ply(os, x, mesh.triangles, k_colors,
                       {{"gaussian_curvature", k_mm}, {"stress", stress_mpa}});
   });
+  // The stencil at true scale (outlines traced every 0.25 mm).
+  if (const membra::PatternPtr pattern = membra::scene_pattern(scene)) {
+    const membra::Box2 frame = membra::scene_frame(scene);
+    const auto outlines = membra::trace_outlines(*pattern, frame, 0.25e-3);
+    out.add("pattern.svg", [&](std::ostream& os) { membra::write_svg(os, outlines, frame); });
+    out.add("pattern.dxf", [&](std::ostream& os) { membra::write_dxf(os, outlines, frame); });
+    const auto png = membra::encode_png(membra::draw_pattern(*pattern, frame, 4.0));
+    out.add("pattern.png", [png](std::ostream& os) {
+      os.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    });
+  }
   std::string render_note;
   try {
     membra::Renderer renderer(1200, 900);

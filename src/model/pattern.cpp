@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -33,6 +34,12 @@ class Strip final : public Pattern {
     return false;
   }
   Box2 bounds() const override { return box_; }
+  double field(const Vec2& p) const override {
+    double d2 = (p - pts_[0]).squaredNorm();
+    for (size_t i = 0; i + 1 < pts_.size(); ++i)
+      d2 = std::min(d2, segment_distance2(p, pts_[i], pts_[i + 1]));
+    return std::sqrt(d2) - r_;
+  }
 
  private:
   std::vector<Vec2> pts_;
@@ -50,6 +57,12 @@ class Ellipse final : public Pattern {
     const Vec2 d = p - c_;
     const double u = cos_ * d.x() + sin_ * d.y(), v = -sin_ * d.x() + cos_ * d.y();
     return (u / a_) * (u / a_) + (v / b_) * (v / b_) <= 1.0;
+  }
+  double field(const Vec2& p) const override {
+    // (r - 1) min(a, b), r the elliptic radius: smooth, zero on the outline, ~ distance near it.
+    const Vec2 d = p - c_;
+    const double u = cos_ * d.x() + sin_ * d.y(), v = -sin_ * d.x() + cos_ * d.y();
+    return (std::hypot(u / a_, v / b_) - 1.0) * std::min(a_, b_);
   }
   Box2 bounds() const override {
     const double hx = std::hypot(a_ * cos_, b_ * sin_), hy = std::hypot(a_ * sin_, b_ * cos_);
@@ -78,6 +91,12 @@ class Polygon final : public Pattern {
     return in;
   }
   Box2 bounds() const override { return box_; }
+  double field(const Vec2& p) const override {
+    double d2 = std::numeric_limits<double>::infinity();
+    for (size_t i = 0, j = v_.size() - 1; i < v_.size(); j = i++)
+      d2 = std::min(d2, segment_distance2(p, v_[j], v_[i]));
+    return contains(p) ? -std::sqrt(d2) : std::sqrt(d2);
+  }
 
  private:
   std::vector<Vec2> v_;
@@ -108,6 +127,21 @@ class Raster final : public Pattern {
     return dark != invert_;
   }
   Box2 bounds() const override { return {origin_, origin_ + size_}; }
+  double field(const Vec2& p) const override {
+    // Bilinear grey value against the threshold, scaled to about a pixel (m) per unit.
+    const Vec2 t = (p - origin_).cwiseQuotient(size_);
+    const double px = t.x() * w_ - 0.5, py = (1.0 - t.y()) * h_ - 0.5;
+    auto at = [&](int c, int r) {
+      if (c < 0 || r < 0 || c >= w_ || r >= h_) return invert_ ? 0.0 : 1.0;  // outside: no resin
+      return static_cast<double>(g_[static_cast<size_t>(r) * w_ + c]);
+    };
+    const int c0 = static_cast<int>(std::floor(px)), r0 = static_cast<int>(std::floor(py));
+    const double fx = px - c0, fy = py - r0;
+    const double g = (1 - fy) * ((1 - fx) * at(c0, r0) + fx * at(c0 + 1, r0)) +
+                     fy * ((1 - fx) * at(c0, r0 + 1) + fx * at(c0 + 1, r0 + 1));
+    const double pixel = std::max(size_.x() / w_, size_.y() / h_);
+    return (invert_ ? threshold_ - g : g - threshold_) * pixel;
+  }
 
  private:
   std::vector<float> g_;
@@ -124,6 +158,11 @@ class Union final : public Pattern {
   }
   bool contains(const Vec2& p) const override {
     return std::any_of(parts_.begin(), parts_.end(), [&](const auto& q) { return q->contains(p); });
+  }
+  double field(const Vec2& p) const override {
+    double f = std::numeric_limits<double>::infinity();
+    for (const auto& q : parts_) f = std::min(f, q->field(p));
+    return f;
   }
   Box2 bounds() const override { return box_; }
 
@@ -144,6 +183,11 @@ class Difference final : public Pattern {
     return true;
   }
   Box2 bounds() const override { return parts_[0]->bounds(); }
+  double field(const Vec2& p) const override {
+    double f = parts_[0]->field(p);
+    for (size_t i = 1; i < parts_.size(); ++i) f = std::max(f, -parts_[i]->field(p));
+    return f;
+  }
 
  private:
   std::vector<PatternPtr> parts_;

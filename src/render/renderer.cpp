@@ -282,6 +282,26 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
   return img;
 }
 
+Image draw_pattern(const Pattern& pattern, const Box2& frame, double pixels_per_mm) {
+  const Vec2 size = (frame.max - frame.min) * 1e3 * pixels_per_mm;
+  Image img{std::max(16, static_cast<int>(std::lround(size.x()))),
+            std::max(16, static_cast<int>(std::lround(size.y()))),
+            {}};
+  img.rgb.assign(static_cast<size_t>(img.width) * img.height * 3, 255);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const Vec2 p(frame.min.x() + (x + 0.5) / img.width * (frame.max.x() - frame.min.x()),
+                   frame.max.y() - (y + 0.5) / img.height * (frame.max.y() - frame.min.y()));
+      std::uint8_t* px = &img.rgb[(static_cast<size_t>(y) * img.width + x) * 3];
+      if (x == 0 || y == 0 || x == img.width - 1 || y == img.height - 1) {
+        px[0] = 220, px[1] = 0, px[2] = 0;  // the frame
+      } else if (pattern.contains(p)) {
+        px[0] = px[1] = px[2] = 0;
+      }
+    }
+  return img;
+}
+
 std::vector<std::uint8_t> encode_png(const Image& image) {
   std::vector<std::uint8_t> png;
   stbi_write_png_to_func(

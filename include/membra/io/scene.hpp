@@ -78,6 +78,11 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
 // assignment.
 void apply_override(nlohmann::json& scene, const std::string& assignment);
 
+// The union of every impregnate step's pattern (nullptr if none), and the frame box (m) it lies
+// in: the sheet stretched by all stretch steps.
+PatternPtr scene_pattern(const Scene& scene);
+Box2 scene_frame(const Scene& scene);
+
 // Keys the parser accepts in each object, by JSON pointer pattern ("/sheet", "/pins/*"), so that
 // docs/scene.schema.json can be checked against the code.
 std::map<std::string, std::vector<std::string>> scene_known_keys();

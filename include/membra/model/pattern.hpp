@@ -31,6 +31,9 @@ class Pattern {
   virtual bool contains(const Vec2& p) const = 0;
   // A box holding every resin point (may be larger than needed).
   virtual Box2 bounds() const = 0;
+  // A field that is negative inside, positive outside and crosses zero smoothly on the outline
+  // (a signed distance where one is cheap), so outlines can be traced between samples.
+  virtual double field(const Vec2& p) const = 0;
 };
 
 using PatternPtr = std::shared_ptr<const Pattern>;

@@ -12,6 +12,7 @@
 #include "membra/geometry/triangulation.hpp"
 #include "membra/geometry/vec.hpp"
 #include "membra/measure/colormap.hpp"
+#include "membra/model/pattern.hpp"
 
 namespace membra {
 
@@ -59,6 +60,10 @@ class Renderer {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The pattern seen from above on its frame (m): resin black on white with a red frame line,
+// `pixels_per_mm` pixels per mm (CPU, no OpenGL needed).
+Image draw_pattern(const Pattern& pattern, const Box2& frame, double pixels_per_mm);
 
 // The image encoded as PNG bytes.
 std::vector<std::uint8_t> encode_png(const Image& image);
