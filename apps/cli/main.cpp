@@ -100,19 +100,54 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   }
   std::string render_note;
   try {
-    membra::Renderer renderer(1200, 900);
-    auto picture = [&](const std::string& file, const std::vector<membra::Rgb>& colors,
-                       const membra::Legend& legend) {
-      const auto png =
-          membra::encode_png(renderer.render(x, mesh.triangles, colors, membra::Camera{}, &legend));
+    const membra::OutputSpec& o = scene.output;
+    const membra::Camera camera{o.azimuth, o.elevation, 1.1};
+    membra::Renderer renderer(o.image_width, o.image_height);
+    auto add_png = [&](const std::string& file, const membra::Image& img) {
+      const auto png = membra::encode_png(img);
       out.add(file, [png](std::ostream& os) {
         os.write(reinterpret_cast<const char*>(png.data()),
                  static_cast<std::streamsize>(png.size()));
       });
     };
+    auto picture = [&](const std::string& file, const std::vector<membra::Rgb>& colors,
+                       const membra::Legend& legend) {
+      add_png(file, renderer.render(x, mesh.triangles, colors, camera, &legend));
+    };
     picture("curvature.png", k_colors, {"Gaussian curvature", "1/mm^2", k_lo, k_hi});
     picture("stress.png", membra::colorize(stress_mpa, s_lo, s_hi),
             {"Stress (tension red)", "MPa", s_lo, s_hi});
+    if (!r.frames.empty()) {
+      // Frames share one stress range; the contact sheet tiles them six to a row (the paper's
+      // figure 8 shows 24).
+      std::vector<double> all;
+      for (const auto& f : r.frames)
+        for (double v : f.stress) all.push_back(v * 1e-6);
+      const auto [f_lo, f_hi] = membra::symmetric_range(all, 1e-3);
+      const membra::Legend legend{"Stress (tension red)", "MPa", f_lo, f_hi};
+      const int cols = std::min<int>(6, static_cast<int>(r.frames.size()));
+      const int rows = (static_cast<int>(r.frames.size()) + cols - 1) / cols;
+      const int tw = 400, th = 300;
+      membra::Renderer tiles(tw, th);
+      membra::Image sheet{
+          cols * tw, rows * th,
+          std::vector<std::uint8_t>(static_cast<size_t>(cols * tw) * rows * th * 3, 255)};
+      for (size_t i = 0; i < r.frames.size(); ++i) {
+        std::vector<double> mpa;
+        for (double v : r.frames[i].stress) mpa.push_back(v * 1e-6);
+        const auto colors = membra::colorize(mpa, f_lo, f_hi);
+        char name[64];
+        std::snprintf(name, sizeof name, "frames/frame_%03zu.png", i + 1);
+        add_png(name, renderer.render(r.frames[i].x, mesh.triangles, colors, camera, &legend));
+        const membra::Image tile =
+            tiles.render(r.frames[i].x, mesh.triangles, colors, camera, nullptr);
+        const int ox = static_cast<int>(i) % cols * tw, oy = static_cast<int>(i) / cols * th;
+        for (int yy = 0; yy < th; ++yy)
+          std::copy_n(&tile.rgb[static_cast<size_t>(yy) * tw * 3], tw * 3,
+                      &sheet.rgb[(static_cast<size_t>(oy + yy) * sheet.width + ox) * 3]);
+      }
+      add_png("contact_sheet.png", sheet);
+    }
   } catch (const membra::RenderError& e) {
     render_note = e.what();
     std::cerr << "membra: warning: no PNG renders: " << e.what() << "\n";

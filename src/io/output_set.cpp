@@ -39,6 +39,8 @@ OutputSet::~OutputSet() {
 void OutputSet::add(const std::string& name, const std::function<void(std::ostream&)>& write) {
   const fs::path final_path = dir_ / name;
   const fs::path tmp = dir_ / (name + tmp_suffix());
+  std::error_code ec;
+  fs::create_directories(final_path.parent_path(), ec);  // names may have a folder: frames/f.png
   staged_.emplace_back(tmp, final_path);
   std::ofstream out(tmp, std::ios::binary);
   if (!out) throw OutputError(tmp.string() + ": cannot open for writing");

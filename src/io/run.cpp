@@ -12,8 +12,19 @@ namespace {
 
 // Solves for equilibrium with the scene's solver: FIRE for "static", projected Newton for
 // "newton", damped time stepping otherwise.
+// Records frames: the state and the stress of its springs at that moment.
+struct FrameRecorder {
+  int wanted = 0;
+  std::vector<Frame>* frames = nullptr;
+  void record(const Model& m, const Points& x, double thickness) {
+    if (!frames || static_cast<int>(frames->size()) >= wanted) return;
+    frames->push_back({x, vertex_stress(m, spring_stress(m, x, thickness))});
+  }
+};
+
 SolveReport solve(const Scene& scene, const PreparedScene& p, State& s, const std::string& stage,
-                  const std::function<void(const Progress&)>& progress) {
+                  const std::function<void(const Progress&)>& progress,
+                  FrameRecorder* recorder = nullptr) {
   auto staged = [&](const Progress& pr) {
     if (!progress) return;
     Progress q = pr;
@@ -44,6 +55,16 @@ SolveReport solve(const Scene& scene, const PreparedScene& p, State& s, const st
   o.force_scale = p.force_scale;
   o.stop_when_converged = scene.simulation.stop_when_converged;
   o.progress = staged;
+  if (recorder && recorder->wanted > 0) {
+    // Evenly over the run, at the first check past each frame time.
+    const long every = std::max<long>(1, o.steps / recorder->wanted);
+    const double t = p.membrane.sheet.material.thickness;
+    o.on_check = [&, every, t, next = every](const State& st, long step) mutable {
+      if (step < next) return;
+      recorder->record(m, st.x, t);
+      next += every * ((step - next) / every + 1);
+    };
+  }
   return run_dynamics(m, s, o);
 }
 
@@ -80,7 +101,9 @@ PreparedScene prepare_scene(const Scene& scene) {
 }
 
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress) {
-  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}};
+  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}, {}};
+  FrameRecorder recorder{scene.output.frames, &r.frames};
+  const double thickness = r.prepared.membrane.sheet.material.thickness;
   Membrane& mem = r.prepared.membrane;
   State& s = mem.state;
   auto record = [&](StepReport step) {
@@ -90,7 +113,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   };
 
   if (scene.protocol.empty()) {
-    record({"solve", solve(scene, r.prepared, s, "solve", progress), 0});
+    record({"solve", solve(scene, r.prepared, s, "solve", progress, &recorder), 0});
   }
   for (const ProtocolStep& step : scene.protocol) {
     bool ok = true;
@@ -119,12 +142,13 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
             const std::string stage =
                 "release " + std::to_string(k) + "/" + std::to_string(step.increments);
             accumulate(rep.solve, solve(scene, r.prepared, s, stage, progress));
+            recorder.record(mem.sheet.model, s.x, thickness);
           }
           ok = record(rep);
         } else {
           // Dynamics from the stretched state, as the paper's tool does.
           set_release_level(mem, 0.0);
-          ok = record({"release", solve(scene, r.prepared, s, "release", progress), 0});
+          ok = record({"release", solve(scene, r.prepared, s, "release", progress, &recorder), 0});
         }
         break;
       }

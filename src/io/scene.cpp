@@ -16,8 +16,11 @@ namespace {
 using nlohmann::json;
 
 // Known keys, one list per object; scene_known_keys() exposes them for the schema test.
-const std::vector<std::string_view> kTopKeys = {"$schema",   "name", "description", "sheet",
-                                                "materials", "pins", "simulation",  "protocol"};
+const std::vector<std::string_view> kTopKeys = {"$schema",    "name",      "description",
+                                                "sheet",      "materials", "pins",
+                                                "simulation", "protocol",  "output"};
+const std::vector<std::string_view> kOutputKeys = {"frames", "camera", "image_size"};
+const std::vector<std::string_view> kCameraKeys = {"azimuth", "elevation"};
 const std::vector<std::string_view> kSheetKeys = {"size", "resolution", "material", "springs",
                                                   "bending"};
 const std::vector<std::string_view> kStretchKeys = {"step", "lambda", "hold"};
@@ -289,6 +292,22 @@ std::vector<std::string> to_strings(const std::vector<std::string_view>& v) {
 
 }  // namespace
 
+void parse_output(const JsonObject& top, OutputSpec& out) {
+  if (!top.has("output")) return;
+  const JsonObject o = top.object("output", kOutputKeys);
+  out.frames = static_cast<int>(o.integer("frames", 0, 0, 1000));
+  if (o.has("camera")) {
+    const JsonObject c = o.object("camera", kCameraKeys);
+    out.azimuth = c.number("azimuth", out.azimuth, Bounds::between(-360, 360));
+    out.elevation = c.number("elevation", out.elevation, Bounds::between(-90, 90));
+  }
+  if (o.has("image_size")) {
+    const auto size = o.numbers("image_size", 2, Bounds::between(64, 8192));
+    out.image_width = static_cast<int>(size[0]);
+    out.image_height = static_cast<int>(size[1]);
+  }
+}
+
 Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   Scene scene;
   const JsonObject top(j, "", kTopKeys);
@@ -299,6 +318,7 @@ Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   parse_pins(top, scene, scene.pins);
   parse_simulation(top, scene);
   parse_protocol(top, j, materials, base_dir, scene);
+  parse_output(top, scene.output);
   if (scene.protocol.empty() &&
       (scene.simulation.solver == "static" || scene.simulation.solver == "newton") &&
       scene.pins.empty() && scene.simulation.gravity != 0.0)
@@ -379,6 +399,8 @@ std::map<std::string, std::vector<std::string>> scene_known_keys() {
           {"/materials/*", to_strings(kMaterialKeys)},
           {"/pins/*", to_strings(kPinKeys)},
           {"/simulation", to_strings(kSimulationKeys)},
+          {"/output", to_strings(kOutputKeys)},
+          {"/output/camera", to_strings(kCameraKeys)},
           {"/protocol/*stretch", to_strings(kStretchKeys)},
           {"/protocol/*impregnate", to_strings(kImpregnateKeys)},
           {"/protocol/*release", to_strings(kReleaseKeys)},

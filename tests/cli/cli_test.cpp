@@ -111,6 +111,22 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   EXPECT_EQ(f, 200);
 }
 
+TEST_F(Cli, DynamicRunWritesFramesAndAContactSheet) {
+  const fs::path out = dir / "frames";
+  const Output o = membra_cli("run " + kExp1 + sets() +
+                              " --set output.frames=6 --set simulation.stop_when_converged=false"
+                              " --set output.camera.elevation=90 --quiet --out " +
+                              out.string());
+  ASSERT_EQ(o.code, 0) << o.text;
+  for (int i = 1; i <= 6; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frames/frame_%03d.png", i);
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(out / "frames/frame_007.png"));
+  EXPECT_TRUE(fs::exists(out / "contact_sheet.png"));
+}
+
 TEST_F(Cli, ValidateGoodAndBrokenScenes) {
   const Output good = membra_cli("validate " + kExp1);
   EXPECT_EQ(good.code, 0) << good.text;

@@ -28,6 +28,12 @@ struct StepReport {
   int resin_springs = 0;  // impregnate: springs that received resin
 };
 
+// One recorded instant of a run, for animations and contact sheets.
+struct Frame {
+  Points x;                    // positions, m
+  std::vector<double> stress;  // mean spring stress at each particle, Pa
+};
+
 struct RunResult {
   PreparedScene prepared;  // prepared.membrane.state holds the final state
   SolveReport solve;       // totals over all solves; residual and convergence of the last
@@ -40,6 +46,7 @@ struct RunResult {
   GaussianCurvature curvature;  // densities smoothed on the grid
   std::string form;             // classify_form(curvature)
   SpringStress stress;          // per spring, for the sheet's thickness
+  std::vector<Frame> frames;    // scene.output.frames instants (dynamic solves, release path)
 };
 
 // Builds the membrane of a scene without running it (what `membra validate` checks). Throws

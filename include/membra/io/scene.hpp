@@ -32,6 +32,14 @@ struct SimulationSpec {
   bool stop_when_converged = true;
 };
 
+// What to draw.
+struct OutputSpec {
+  int frames = 0;           // animation frames to record (0: none), e.g. 24
+  double azimuth = -60.0;   // camera, degrees around +z from +x
+  double elevation = 35.0;  // camera, degrees above the sheet
+  int image_width = 1200, image_height = 900;
+};
+
 // One step of the process (DESIGN.md section 2), in SI.
 struct ProtocolStep {
   enum class Kind { stretch, impregnate, release, load } kind = Kind::stretch;
@@ -61,6 +69,7 @@ struct Scene {
   SheetOptions sheet;  // material in SI, K override in N/m
   std::vector<PinSpec> pins;
   SimulationSpec simulation;
+  OutputSpec output;
   std::vector<ProtocolStep> protocol;  // empty: one solve of the sheet as built
 };
 
