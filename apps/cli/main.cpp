@@ -43,6 +43,7 @@ int cmd_validate(const std::string& scene_file, const std::vector<std::string>& 
 
 struct RunOptions {
   std::vector<double> curvature_range;  // [lo, hi] in 1/mm^2, or empty for automatic
+  std::vector<double> stress_range;     // [lo, hi] in MPa, or empty for automatic
 };
 
 int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
@@ -81,7 +82,8 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   auto [k_lo, k_hi] = membra::symmetric_range(k_mm, 1e-6);
   if (opts.curvature_range.size() == 2)
     k_lo = opts.curvature_range[0], k_hi = opts.curvature_range[1];
-  const auto [s_lo, s_hi] = membra::symmetric_range(stress_mpa, 1e-3);
+  auto [s_lo, s_hi] = membra::symmetric_range(stress_mpa, 1e-3);
+  if (opts.stress_range.size() == 2) s_lo = opts.stress_range[0], s_hi = opts.stress_range[1];
   const std::vector<membra::Rgb> k_colors = membra::colorize(k_mm, k_lo, k_hi);
   out.add("final.ply", [&](std::ostream& os) {
     membra::write_ply(os, x, mesh.triangles, k_colors,
@@ -184,6 +186,11 @@ int main(int argc, char** argv) {
       ->expected(2)
       ->allow_extra_args(false)
       ->type_name("LO HI");
+  run->add_option("--stress-range", run_opts.stress_range,
+                  "Colour range of stress.png, MPa (default: symmetric, automatic)")
+      ->expected(2)
+      ->allow_extra_args(false)
+      ->type_name("LO HI");
   run->add_flag("--quiet,-q", quiet, "No progress bar or summary");
 
   auto* validate = app.add_subcommand("validate", "Check a scene without running it");
@@ -199,9 +206,10 @@ int main(int argc, char** argv) {
   }
   try {
     if (*run) {
-      if (run_opts.curvature_range.size() == 2 &&
-          !(run_opts.curvature_range[0] < run_opts.curvature_range[1]))
-        throw membra::InputError("--curvature-range", "LO must be below HI");
+      for (const auto& [flag, range] : {std::pair{"--curvature-range", &run_opts.curvature_range},
+                                        std::pair{"--stress-range", &run_opts.stress_range}})
+        if (range->size() == 2 && !((*range)[0] < (*range)[1]))
+          throw membra::InputError(flag, "LO must be below HI");
       return cmd_run(scene_file, sets, out_dir, quiet, run_opts);
     }
     if (*validate) return cmd_validate(scene_file, sets, quiet);

@@ -67,6 +67,8 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                       {"classification", r.form}};
     j["stress"] = {{"min", r.stress.min_stress / units::MPa},
                    {"max", r.stress.max_stress / units::MPa}};
+    j["strain"] = {{"min", r.stress.min_strain}, {"max", r.stress.max_strain}};
+    j["force"] = {{"min", r.stress.min_force}, {"max", r.stress.max_force}};
   }
   j["units"] = {
       {"residual", "N"},
@@ -85,6 +87,8 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
       {"curvature.min_density", "1/mm^2"},
       {"stress.min", "MPa (spring force / (tributary width x sheet thickness); < 0 compression)"},
       {"stress.max", "MPa"},
+      {"strain", "1 ((l - l0) / l0 of the springs)"},
+      {"force", "N (spring forces, tension positive)"},
       {"curvature.max_density", "1/mm^2"},
       {"shape.bbox_min", "mm"},
       {"shape.bbox_max", "mm"},

@@ -16,6 +16,10 @@ SpringStress spring_stress(const Model& model, const Points& x, double thickness
     const double l = (x.col(sp.b[i]) - x.col(sp.a[i])).norm(), l0 = sp.rest_length[i];
     r.strain[i] = l0 > 0.0 ? (l - l0) / l0 : 0.0;
     r.force[i] = sp.stiffness[i] * (l - l0);
+    r.min_strain = i == 0 ? r.strain[i] : std::min(r.min_strain, r.strain[i]);
+    r.max_strain = i == 0 ? r.strain[i] : std::max(r.max_strain, r.strain[i]);
+    r.min_force = i == 0 ? r.force[i] : std::min(r.min_force, r.force[i]);
+    r.max_force = i == 0 ? r.force[i] : std::max(r.max_force, r.force[i]);
     if (!(sp.width[i] > 0.0) || !(thickness > 0.0)) continue;
     r.stress[i] = r.force[i] / (sp.width[i] * thickness);
     r.min_stress = first ? r.stress[i] : std::min(r.min_stress, r.stress[i]);

@@ -97,6 +97,8 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   EXPECT_GT(report["shape"]["height"].get<double>(), 1.0);
   EXPECT_LT(report["energy"].get<double>(), 0.0);
   EXPECT_GT(report["stress"]["max"].get<double>(), 0.0);  // a hanging sheet is in tension
+  EXPECT_GT(report["strain"]["max"].get<double>(), 0.0);
+  EXPECT_EQ(report["force"]["max"].get<double>(), r.stress.max_force);
   for (const char* key :
        {"residual", "energy", "shape.height", "wall_seconds", "curvature.total", "stress.max"})
     EXPECT_TRUE(report["units"].contains(key)) << key;
@@ -159,6 +161,18 @@ TEST_F(Cli, BadInputFailsCleanlyAndWritesNothing) {
     EXPECT_EQ(o.code, 2) << o.text;
     EXPECT_NE(o.text.find(c.expect), std::string::npos) << o.text;
     EXPECT_FALSE(fs::exists(out)) << c.scene;
+  }
+}
+
+TEST_F(Cli, ColourRangesMustBeOrdered) {
+  for (const char* flag : {"--curvature-range", "--stress-range"}) {
+    const fs::path out = dir / "ranges";
+    const Output o =
+        membra_cli("run " + kExp1 + sets() + " " + flag + " 1 -1 --out " + out.string());
+    EXPECT_EQ(o.code, 2) << o.text;
+    EXPECT_NE(o.text.find(std::string(flag) + ": LO must be below HI"), std::string::npos)
+        << o.text;
+    EXPECT_FALSE(fs::exists(out));
   }
 }
 

@@ -11,6 +11,8 @@ struct SpringStress {
   std::vector<double> force;   // k (l - l0), N; > 0 tension
   std::vector<double> stress;  // force / (tributary width x thickness), Pa; 0 if width unknown
   double min_stress = 0.0, max_stress = 0.0;  // Pa, over springs with a known width
+  double min_strain = 0.0, max_strain = 0.0;  // over all springs
+  double min_force = 0.0, max_force = 0.0;    // N, over all springs
 };
 
 // Per-spring measures at positions x for a sheet of the given thickness (m).
