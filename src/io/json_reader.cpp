@@ -6,6 +6,10 @@
 
 namespace membra {
 
+std::vector<std::string> to_strings(const std::vector<std::string_view>& keys) {
+  return {keys.begin(), keys.end()};
+}
+
 std::string json_type_name(const nlohmann::json& v) {
   if (v.is_number()) return "number";
   return v.type_name();

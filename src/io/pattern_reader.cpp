@@ -112,15 +112,12 @@ PatternPtr read_pattern(const json& j, const std::string& pointer,
 }
 
 std::map<std::string, std::vector<std::string>> pattern_known_keys() {
-  auto s = [](const std::vector<std::string_view>& v) {
-    return std::vector<std::string>(v.begin(), v.end());
-  };
-  return {{"", s(kKinds)},
-          {"strip", s(kStripKeys)},
-          {"ellipse", s(kEllipseKeys)},
-          {"hyperbola", s(kHyperbolaKeys)},
-          {"polygon", s(kPolygonKeys)},
-          {"image", s(kImageKeys)}};
+  return {{"", to_strings(kKinds)},
+          {"strip", to_strings(kStripKeys)},
+          {"ellipse", to_strings(kEllipseKeys)},
+          {"hyperbola", to_strings(kHyperbolaKeys)},
+          {"polygon", to_strings(kPolygonKeys)},
+          {"image", to_strings(kImageKeys)}};
 }
 
 }  // namespace membra

@@ -286,10 +286,6 @@ void parse_protocol(const JsonObject& top, const json& j,
   }
 }
 
-std::vector<std::string> to_strings(const std::vector<std::string_view>& v) {
-  return {v.begin(), v.end()};
-}
-
 }  // namespace
 
 void parse_output(const JsonObject& top, OutputSpec& out) {

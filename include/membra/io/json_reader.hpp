@@ -54,6 +54,8 @@ class JsonObject {
 
 // Checks a number against bounds; throws InputError at `pointer`.
 double checked_number(const nlohmann::json& v, const std::string& pointer, Bounds b);
+// A key list as strings (for the schema tests' key maps).
+std::vector<std::string> to_strings(const std::vector<std::string_view>& keys);
 // The JSON type name of a value, for messages ("string", "array", ...).
 std::string json_type_name(const nlohmann::json& v);
 
