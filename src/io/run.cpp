@@ -10,8 +10,6 @@
 namespace membra {
 namespace {
 
-// Solves for equilibrium with the scene's solver: FIRE for "static", projected Newton for
-// "newton", damped time stepping otherwise.
 // Records frames: the state and the stress of its springs at that moment.
 struct FrameRecorder {
   int wanted = 0;
@@ -22,6 +20,8 @@ struct FrameRecorder {
   }
 };
 
+// Solves for equilibrium with the scene's solver: FIRE for "static", shifted Newton for
+// "newton", damped time stepping otherwise.
 SolveReport solve(const Scene& scene, const PreparedScene& p, State& s, const std::string& stage,
                   const std::function<void(const Progress&)>& progress,
                   FrameRecorder* recorder = nullptr) {

@@ -1,10 +1,10 @@
 #pragma once
-// Static equilibrium by projected Newton: each element's Hessian is made positive semi-definite
-// (compressed springs lose their negative geometric stiffness, bending blocks their negative
-// eigenvalues), the sparse system is solved by Cholesky (LDL^T), and a backtracking line search
-// on the energy keeps every step downhill. Converges in tens of iterations where first-order
-// methods need hundreds of thousands: the resin is ~1000x stiffer than the latex, and bending
-// is ~1e4x softer than stretching.
+// Static equilibrium by Newton's method with a Levenberg-Marquardt shift: the exact Hessian
+// (springs analytic, bending by differences of the analytic gradient) plus mu I, with mu grown
+// until a sparse Cholesky factorization (CHOLMOD) succeeds, i.e. the system is positive
+// definite, and shrunk after each accepted step; a backtracking line search on the energy keeps
+// every step downhill. A sheet with no pins has six coordinates held to remove its rigid
+// motions. Experimental: fast on exp2, stalls on exp3 (docs/process.md).
 #include <functional>
 
 #include <Eigen/SparseCore>
