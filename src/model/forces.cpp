@@ -1,6 +1,11 @@
 #include "membra/model/forces.hpp"
 
 #include <algorithm>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "membra/model/bend_kernel.hpp"
 #include "membra/model/spring_kernel.hpp"
@@ -8,10 +13,11 @@
 namespace membra {
 namespace {
 
-void add_spring_forces(const Model& model, const Points& x, const Points* v, Points& f) {
+void add_spring_forces(const Model& model, const Points& x, const Points* v, int begin, int end,
+                       Points& f) {
   const Springs& s = model.springs;
   const Vec3 zero = Vec3::Zero();
-  for (int i = 0; i < s.size(); ++i) {
+  for (int i = begin; i < end; ++i) {
     const int a = s.a[i], b = s.b[i];
     const double c = v ? s.damping[i] : 0.0;
     const Vec3 fa =
@@ -22,13 +28,39 @@ void add_spring_forces(const Model& model, const Points& x, const Points* v, Poi
   }
 }
 
-void add_bending_forces(const Model& model, const Points& x, Points& f) {
+void add_bending_forces(const Model& model, const Points& x, int begin, int end, Points& f) {
   const Bending& b = model.bending;
-  for (int i = 0; i < b.size(); ++i) {
+  for (int i = begin; i < end; ++i) {
     const auto& v = b.v[i];
     const BendEval e = bend_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), b.stiffness[i]);
     for (int k = 0; k < 3; ++k) f.col(v[k]) -= e.grad[k];
   }
+}
+
+// Springs and bending. Large sheets split the elements between threads, each summing into its
+// own buffer; the buffers are added in thread order, so results do not depend on timing.
+void add_elastic_forces(const Model& model, const Points& x, const Points* v, Points& f) {
+  const int ns = model.springs.size(), nb = model.bending.size();
+#ifdef _OPENMP
+  constexpr int kParallelParticles = 2000;  // below this, threads cost more than they save
+  const int threads = omp_get_max_threads();
+  if (threads > 1 && model.num_particles() >= kParallelParticles) {
+    std::vector<Points> partial(static_cast<size_t>(threads));
+#pragma omp parallel num_threads(threads)
+    {
+      const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+      Points& ft = partial[static_cast<size_t>(t)];
+      ft.setZero(3, x.cols());
+      add_spring_forces(model, x, v, ns * t / nt, ns * (t + 1) / nt, ft);
+      add_bending_forces(model, x, nb * t / nt, nb * (t + 1) / nt, ft);
+    }
+    for (const Points& ft : partial)
+      if (ft.cols() == f.cols()) f += ft;
+    return;
+  }
+#endif
+  add_spring_forces(model, x, v, 0, ns, f);
+  add_bending_forces(model, x, 0, nb, f);
 }
 
 void add_gravity(const Model& model, Points& f) {
@@ -40,8 +72,7 @@ void add_gravity(const Model& model, Points& f) {
 void compute_forces(const Model& model, const Points& x, const Points& v, Points& f) {
   f.setZero(3, x.cols());
   const bool dynamic = v.cols() == x.cols();
-  add_spring_forces(model, x, dynamic ? &v : nullptr, f);
-  add_bending_forces(model, x, f);
+  add_elastic_forces(model, x, dynamic ? &v : nullptr, f);
   add_gravity(model, f);
   if (dynamic && model.velocity_damping != 0.0) {
     for (int p = 0; p < model.num_particles(); ++p)
@@ -51,8 +82,7 @@ void compute_forces(const Model& model, const Points& x, const Points& v, Points
 
 void compute_static_forces(const Model& model, const Points& x, Points& f) {
   f.setZero(3, x.cols());
-  add_spring_forces(model, x, nullptr, f);
-  add_bending_forces(model, x, f);
+  add_elastic_forces(model, x, nullptr, f);
   add_gravity(model, f);
 }
 
