@@ -134,7 +134,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
       case ProtocolStep::Kind::release: {
         perturb(mem, step.perturbation, step.seed);
         begin_release(mem);
-        if (scene.simulation.solver == "static" || scene.simulation.solver == "newton") {
+        if (scene.simulation.is_static()) {
           // Quasi-static path: the latex returns to its natural length in increments.
           StepReport rep{"release", {}, 0};
           for (int k = 1; k <= step.increments && !rep.solve.diverged; ++k) {

@@ -185,19 +185,16 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
 
 // The steps, checked in order: the frame size a pattern must fit depends on the stretches
 // before it, and a static solve of a free sheet under gravity has no equilibrium.
-void parse_protocol(const JsonObject& top, const json& j,
-                    const std::map<std::string, Material>& materials,
+void parse_protocol(const JsonObject& top, const std::map<std::string, Material>& materials,
                     const std::filesystem::path& base_dir, Scene& scene) {
   if (!top.has("protocol")) return;
   const auto& arr = top.at("protocol");
   if (!arr.is_array()) throw InputError("/protocol", "expected an array of steps");
-  (void)j;
   Vec2 stretch(1.0, 1.0);
   bool pinned = !scene.pins.empty(), framed = false;
   double gravity = scene.simulation.gravity;
-  const bool is_static = scene.simulation.solver == "static" || scene.simulation.solver == "newton";
   auto check_equilibrium = [&](const std::string& ptr) {
-    if (is_static && !pinned && !framed && gravity != 0.0)
+    if (scene.simulation.is_static() && !pinned && !framed && gravity != 0.0)
       throw InputError(ptr,
                        "a free sheet under gravity has no static equilibrium: pin it (a load "
                        "step with pins) or set simulation.G (or the load step's gravity) to 0");
@@ -313,11 +310,10 @@ Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   parse_sheet(top, materials, scene);
   parse_pins(top, scene, scene.pins);
   parse_simulation(top, scene);
-  parse_protocol(top, j, materials, base_dir, scene);
+  parse_protocol(top, materials, base_dir, scene);
   parse_output(top, scene.output);
-  if (scene.protocol.empty() &&
-      (scene.simulation.solver == "static" || scene.simulation.solver == "newton") &&
-      scene.pins.empty() && scene.simulation.gravity != 0.0)
+  if (scene.protocol.empty() && scene.simulation.is_static() && scene.pins.empty() &&
+      scene.simulation.gravity != 0.0)
     throw InputError("/simulation/G",
                      "a free sheet under gravity has no static equilibrium: add "
                      "pins or set G to 0");

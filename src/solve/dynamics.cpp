@@ -1,6 +1,5 @@
 #include "membra/solve/dynamics.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -26,10 +25,8 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
   if (!(o.force_scale > 0.0)) throw std::invalid_argument("force scale must be > 0");
   const int check_every = std::max(1, o.check_every);
 
-  const auto start = std::chrono::steady_clock::now();
-  auto seconds = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
+  const Stopwatch clock;
+  auto seconds = [&] { return clock.seconds(); };
   // Explicit instability grows positions exponentially; a sheet 100x its initial size, or any
   // NaN, is a blow-up, never a form.
   const double size0 = std::max(extent(state.x), 1e-12);

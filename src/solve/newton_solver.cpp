@@ -1,7 +1,6 @@
 #include "membra/solve/newton_solver.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -152,10 +151,8 @@ Eigen::SparseMatrix<double> potential_hessian(const Model& model, const Points& 
 }
 
 SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  auto seconds = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
+  const Stopwatch clock;
+  auto seconds = [&] { return clock.seconds(); };
   const int n = model.num_particles();
   Points& x = state.x;
   // A sheet with no pins can move rigidly: its Hessian has six zero eigenvalues. Holding six

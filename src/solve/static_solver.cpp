@@ -1,6 +1,5 @@
 #include "membra/solve/static_solver.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -37,10 +36,8 @@ std::vector<double> stiffness_scaled_masses(const Model& model, const Points& x)
 }
 
 SolveReport solve_static(const Model& model, State& state, const StaticOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  auto seconds = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
+  const Stopwatch clock;
+  auto seconds = [&] { return clock.seconds(); };
   const int n = model.num_particles();
   const std::vector<double> mass = stiffness_scaled_masses(model, state.x);
 

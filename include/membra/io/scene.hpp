@@ -30,6 +30,9 @@ struct SimulationSpec {
   long max_iterations = 500000;   // iterations of the static solver
   double tolerance = 1e-6;        // relative to k_stretch x grid spacing
   bool stop_when_converged = true;
+
+  // True for the equilibrium solvers (static, newton), false for time stepping.
+  bool is_static() const { return solver == "static" || solver == "newton"; }
 };
 
 // What to draw.

@@ -1,5 +1,6 @@
 #pragma once
 // What every solver reports about a run.
+#include <chrono>
 #include <string>
 
 namespace membra {
@@ -13,6 +14,17 @@ struct SolveReport {
   long iterations = 0;             // time steps or solver iterations taken
   long force_passes = 0;           // full force evaluations
   double wall_seconds = 0.0;
+};
+
+// Wall time since construction, for the reports.
+class Stopwatch {
+ public:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 // "NAME: converged after N iterations, residual R (tolerance T)".
