@@ -12,8 +12,9 @@ namespace {
 
 using nlohmann::json;
 
-const std::vector<std::string_view> kKinds = {"strip", "ellipse", "hyperbola", "polygon",
-                                              "image", "union",   "difference"};
+const std::vector<std::string_view> kKinds = {"strip",   "ellipse", "circle", "hyperbola",
+                                              "polygon", "image",   "union",  "difference"};
+const std::vector<std::string_view> kCircleKeys = {"center", "radius"};
 const std::vector<std::string_view> kStripKeys = {"points", "width"};
 const std::vector<std::string_view> kEllipseKeys = {"center", "radii", "angle", "ring_width"};
 const std::vector<std::string_view> kHyperbolaKeys = {"center", "a",     "b",
@@ -82,6 +83,11 @@ PatternPtr read_pattern(const json& j, const std::string& pointer,
           o.number("ring_width", std::nullopt, Bounds::positive()) * units::mm);
     return make_ellipse(c, r.x(), r.y(), degrees(o));
   }
+  if (kind == "circle") {
+    const JsonObject o(body, ptr, kCircleKeys);
+    const double r = o.number("radius", std::nullopt, Bounds::positive()) * units::mm;
+    return make_ellipse(read_vec2(o, "center"), r, r, 0.0);
+  }
   if (kind == "hyperbola") {
     const JsonObject o(body, ptr, kHyperbolaKeys);
     const Vec2 c = read_vec2(o, "center");
@@ -115,6 +121,7 @@ std::map<std::string, std::vector<std::string>> pattern_known_keys() {
   return {{"", to_strings(kKinds)},
           {"strip", to_strings(kStripKeys)},
           {"ellipse", to_strings(kEllipseKeys)},
+          {"circle", to_strings(kCircleKeys)},
           {"hyperbola", to_strings(kHyperbolaKeys)},
           {"polygon", to_strings(kPolygonKeys)},
           {"image", to_strings(kImageKeys)}};

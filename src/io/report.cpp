@@ -41,6 +41,11 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                          {"wall_seconds", step.solve.wall_seconds}};
     if (step.name == "impregnate")
       js = {{"step", step.name}, {"resin_springs", step.resin_springs}};
+    if (step.name == "add_springs") js["springs_added"] = step.springs_added;
+    if (step.name == "cut") {
+      js["springs_cut"] = step.springs_cut;
+      js["particles_removed"] = step.particles_removed;
+    }
     j["steps"].push_back(js);
   }
   j["stiffness"] = {{"stretch", r.prepared.membrane.sheet.stiffness.stretch / units::N_per_mm},
@@ -69,6 +74,14 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                    {"max", r.stress.max_stress / units::MPa}};
     j["strain"] = {{"min", r.stress.min_strain}, {"max", r.stress.max_strain}};
     j["force"] = {{"min", r.stress.min_force}, {"max", r.stress.max_force}};
+    j["cuts"] = nlohmann::json::array();
+    for (const StressConcentration& c : r.concentrations)
+      j["cuts"].push_back({{"step", c.name},
+                           {"kind", c.kind},
+                           {"peak_stress", c.peak_stress / units::MPa},
+                           {"peak_at", {c.peak_at.x() / units::mm, c.peak_at.y() / units::mm}},
+                           {"far_field_stress", c.far_field_stress / units::MPa},
+                           {"concentration", c.concentration}});
   }
   j["units"] = {
       {"residual", "N"},
@@ -89,6 +102,13 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
       {"stress.max", "MPa"},
       {"strain", "1 ((l - l0) / l0 of the springs)"},
       {"force", "N (spring forces, tension positive)"},
+      {"cuts.peak_stress",
+       "MPa (largest in-plane principal stress of the particles within 1.5 spacings of the cut or "
+       "hole)"},
+      {"cuts.far_field_stress",
+       "MPa (median largest principal stress beyond a quarter of the sheet's side)"},
+      {"cuts.concentration", "1 (peak / far field)"},
+      {"cuts.peak_at", "mm, paper coordinates"},
       {"curvature.max_density", "1/mm^2"},
       {"shape.bbox_min", "mm"},
       {"shape.bbox_max", "mm"},

@@ -1,7 +1,11 @@
 #include "membra/io/run.hpp"
 
 #include "membra/io/input_error.hpp"
+#include "membra/measure/stress_tensor.hpp"
+#include "membra/model/added_springs.hpp"
+#include "membra/model/cut.hpp"
 #include "membra/model/forces.hpp"
+#include "membra/model/grow.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/solve/dynamics.hpp"
 #include "membra/solve/newton_solver.hpp"
@@ -79,6 +83,30 @@ void accumulate(SolveReport& total, const SolveReport& r) {
   total.message = r.message;
 }
 
+// Follows a change of the model along a path: with an equilibrium solver, set(k / n) and a solve
+// for k = 1..n (quasi-static: the sheet stays near equilibrium and picks the branch a slow
+// process would); with time stepping, set(1) and one run of dynamics from the current state.
+StepReport follow_path(const Scene& scene, const PreparedScene& p, State& s,
+                       const std::string& name, int increments,
+                       const std::function<void(double)>& set,
+                       const std::function<void(const Progress&)>& progress,
+                       FrameRecorder& recorder) {
+  StepReport rep{name, {}, 0};
+  if (!scene.simulation.is_static()) {
+    set(1.0);
+    rep.solve = solve(scene, p, s, name, progress, &recorder);
+    return rep;
+  }
+  const double thickness = p.membrane.sheet.material.thickness;
+  for (int k = 1; k <= increments && !rep.solve.diverged; ++k) {
+    set(static_cast<double>(k) / increments);
+    const std::string stage = name + " " + std::to_string(k) + "/" + std::to_string(increments);
+    accumulate(rep.solve, solve(scene, p, s, stage, progress));
+    recorder.record(p.membrane.sheet.model, s.x, thickness);
+  }
+  return rep;
+}
+
 int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScene& p) {
   try {
     return apply_pins(pins, p.membrane.sheet.grid, p.membrane.sheet.model);
@@ -101,7 +129,7 @@ PreparedScene prepare_scene(const Scene& scene) {
 }
 
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress) {
-  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}, {}};
+  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}, {}, {}, {}};
   FrameRecorder recorder{scene.output.frames, &r.frames};
   const double thickness = r.prepared.membrane.sheet.material.thickness;
   Membrane& mem = r.prepared.membrane;
@@ -132,24 +160,77 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
         break;
       }
       case ProtocolStep::Kind::release: {
+        // The latex returns to its natural length in increments (dynamics: at once, from the
+        // stretched state, as the paper's tool does).
         perturb(mem, step.perturbation, step.seed);
         begin_release(mem);
-        if (scene.simulation.is_static()) {
-          // Quasi-static path: the latex returns to its natural length in increments.
-          StepReport rep{"release", {}, 0};
-          for (int k = 1; k <= step.increments && !rep.solve.diverged; ++k) {
-            set_release_level(mem, 1.0 - static_cast<double>(k) / step.increments);
-            const std::string stage =
-                "release " + std::to_string(k) + "/" + std::to_string(step.increments);
-            accumulate(rep.solve, solve(scene, r.prepared, s, stage, progress));
-            recorder.record(mem.sheet.model, s.x, thickness);
-          }
-          ok = record(rep);
-        } else {
-          // Dynamics from the stretched state, as the paper's tool does.
-          set_release_level(mem, 0.0);
-          ok = record({"release", solve(scene, r.prepared, s, "release", progress, &recorder), 0});
+        ok = record(follow_path(
+            scene, r.prepared, s, "release", step.increments,
+            [&](double t) { set_release_level(mem, 1.0 - t); }, progress, recorder));
+        break;
+      }
+      case ProtocolStep::Kind::grow: {
+        std::vector<double> ratios;
+        try {
+          ratios = growth_ratios(mem, step.grow);
+        } catch (const std::invalid_argument& e) {
+          throw InputError(step.pointer + "/factor", e.what());
         }
+        perturb(mem, step.perturbation, step.seed);
+        double applied = 0.0;  // share of the growth applied so far
+        ok = record(follow_path(
+            scene, r.prepared, s, "grow", step.increments,
+            [&](double t) {
+              apply_growth(mem, ratios, t - applied);
+              applied = t;
+            },
+            progress, recorder));
+        break;
+      }
+      case ProtocolStep::Kind::add_springs: {
+        AddSpringsSpec spec = step.add;
+        if (spec.stiffness <= 0.0) spec.stiffness = mem.sheet.stiffness.stretch;
+        const int first = mem.sheet.model.springs.size();
+        const int added = add_springs(mem, spec);
+        if (added == 0)
+          throw InputError(step.pointer + "/pattern",
+                           "the region covers no spring of the sheet (is it between grid nodes, "
+                           "or outside the sheet?)");
+        std::vector<double> start;
+        const Springs& sp = mem.sheet.model.springs;
+        for (int k = first; k < sp.size(); ++k)
+          start.push_back((s.x.col(sp.b[k]) - s.x.col(sp.a[k])).norm());
+        perturb(mem, step.perturbation, step.seed);
+        StepReport rep = follow_path(
+            scene, r.prepared, s, "add_springs", step.increments,
+            [&](double t) { set_added_springs_level(mem, first, start, spec.rest_factor, t); },
+            progress, recorder);
+        rep.springs_added = added;
+        ok = record(rep);
+        break;
+      }
+      case ProtocolStep::Kind::cut: {
+        StepReport rep{"cut", {}, 0};
+        if (!step.cut_line.empty()) {
+          StressFeature f{step.pointer + "/line", "cut", {}};
+          rep.springs_cut = cut_along(mem, step.cut_line, &f.where);
+          if (rep.springs_cut == 0)
+            throw InputError(step.pointer + "/line", "the cut crosses no spring of the sheet");
+          r.features.push_back(std::move(f));
+        }
+        if (step.hole) {
+          StressFeature f{step.pointer + "/hole", "hole", {}};
+          try {
+            rep.particles_removed = punch_hole(mem, *step.hole, &f.where);
+          } catch (const std::invalid_argument& e) {
+            throw InputError(step.pointer + "/hole", e.what());
+          }
+          if (rep.particles_removed == 0)
+            throw InputError(step.pointer + "/hole", "the hole covers no particle of the sheet");
+          r.features.push_back(std::move(f));
+        }
+        rep.solve = solve(scene, r.prepared, s, "cut", progress);
+        ok = record(rep);
         break;
       }
       case ProtocolStep::Kind::load:
@@ -171,6 +252,15 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   smooth_density_on_grid(mem.sheet.grid, r.curvature);
   r.form = classify_form(r.curvature);
   r.stress = spring_stress(m, s.x, mem.sheet.material.thickness);
+  if (!r.features.empty()) {
+    // Peak within 1.5 spacings (the particles on the new edge) against the median far away.
+    const GridSheet& g = mem.sheet.grid;
+    const auto principal = max_principal_stress(node_stress(g, m, s.x, thickness));
+    const double near = 1.5 * std::max(g.hx(), g.hy());
+    const double far = 0.25 * std::min(g.width(), g.height());
+    for (const StressFeature& f : r.features)
+      r.concentrations.push_back(stress_concentration(m, principal, f, near, far));
+  }
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "membra/io/field_reader.hpp"
 #include "membra/io/json_reader.hpp"
 #include "membra/io/pattern_reader.hpp"
 #include "membra/model/units.hpp"
@@ -27,6 +28,13 @@ const std::vector<std::string_view> kStretchKeys = {"step", "lambda", "hold"};
 const std::vector<std::string_view> kImpregnateKeys = {"step", "pattern", "material", "resin_side"};
 const std::vector<std::string_view> kReleaseKeys = {"step", "increments", "perturbation", "seed"};
 const std::vector<std::string_view> kLoadKeys = {"step", "gravity", "pins"};
+const std::vector<std::string_view> kGrowKeys = {"step",       "factor",       "family",
+                                                 "direction",  "center",       "region",
+                                                 "increments", "perturbation", "seed"};
+const std::vector<std::string_view> kAddSpringsKeys = {"step",       "pattern",      "along",
+                                                       "count",      "stiffness",    "rest_factor",
+                                                       "increments", "perturbation", "seed"};
+const std::vector<std::string_view> kCutKeys = {"step", "line", "hole"};
 const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
 const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
@@ -183,6 +191,85 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
 }
 
+// increments, perturbation and seed: how a step that changes the sheet's shape is followed.
+void parse_path(const JsonObject& o, ProtocolStep& step) {
+  step.increments = static_cast<int>(o.integer("increments", step.increments, 1, 100000));
+  step.perturbation =
+      o.number("perturbation", step.perturbation / units::mm, Bounds::non_negative()) * units::mm;
+  step.seed = static_cast<std::uint64_t>(o.integer("seed", 1, 0, 2'000'000'000L));
+}
+
+SpringFamily spring_family(const std::string& name) {
+  if (name == "stretch") return SpringFamily::stretch;
+  if (name == "shear") return SpringFamily::shear;
+  if (name == "flex") return SpringFamily::flex;
+  return SpringFamily::added;
+}
+
+std::vector<Vec2> read_polyline(const JsonObject& o, std::string_view key) {
+  const auto& arr = o.at(key);
+  if (!arr.is_array() || arr.size() < 2)
+    throw InputError(o.pointer(key), "expected an array of at least 2 [x, y] points (mm)");
+  std::vector<Vec2> pts;
+  for (size_t i = 0; i < arr.size(); ++i) {
+    const std::string ptr = o.pointer(key) + "/" + std::to_string(i);
+    if (!arr[i].is_array() || arr[i].size() != 2) throw InputError(ptr, "expected [x, y] in mm");
+    pts.emplace_back(checked_number(arr[i][0], ptr + "/0", {}) * units::mm,
+                     checked_number(arr[i][1], ptr + "/1", {}) * units::mm);
+  }
+  for (size_t i = 0; i + 1 < pts.size(); ++i)
+    if ((pts[i + 1] - pts[i]).norm() == 0.0)
+      throw InputError(o.pointer(key) + "/" + std::to_string(i + 1),
+                       "repeats the point before it (a cut segment needs a length)");
+  return pts;
+}
+
+// grow: the factor field over paper coordinates, checked positive at every spring midpoint of
+// the grid (the points where it will be evaluated) so a bad formula fails before any solve.
+void parse_grow(const JsonObject& o, const std::filesystem::path& base_dir, const Scene& scene,
+                ProtocolStep& step) {
+  step.kind = ProtocolStep::Kind::grow;
+  const Vec2 size(scene.grid.width, scene.grid.height);
+  FormulaContext ctx;
+  ctx.size = size;
+  ctx.center = 0.5 * size;
+  if (o.has("center")) {
+    const auto c = o.numbers("center", 2);
+    ctx.center = Vec2(c[0], c[1]) * units::mm;
+  }
+  GrowSpec& g = step.grow;
+  g.center = ctx.center;
+  g.factor = read_field(o.at("factor"), o.pointer("factor"), base_dir, ctx);
+  const int nx = 2 * scene.grid.nx - 1, ny = 2 * scene.grid.ny - 1;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const Vec2 p(size.x() * i / (nx - 1), size.y() * j / (ny - 1));
+      double f = 0.0;
+      try {
+        f = g.factor(p);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(o.pointer("factor"), e.what());
+      }
+      if (!std::isfinite(f) || !(f > 0.0)) {
+        std::ostringstream msg;
+        msg << "the growth factor is " << f << " at (" << p.x() / units::mm << ", "
+            << p.y() / units::mm << ") mm (paper coordinates); it must be positive everywhere";
+        throw InputError(o.pointer("factor"), msg.str());
+      }
+    }
+  const std::string family =
+      o.string("family", "all", {"all", "stretch", "shear", "flex", "added"});
+  if (family != "all") g.family = spring_family(family);
+  const std::string dir = o.string("direction", "all", {"all", "x", "y", "radial", "hoop"});
+  g.direction = dir == "x"        ? GrowDirection::x
+                : dir == "y"      ? GrowDirection::y
+                : dir == "radial" ? GrowDirection::radial
+                : dir == "hoop"   ? GrowDirection::hoop
+                                  : GrowDirection::all;
+  if (o.has("region")) g.region = read_pattern(o.at("region"), o.pointer("region"), base_dir, size);
+  parse_path(o, step);
+}
+
 // The steps, checked in order: the frame size a pattern must fit depends on the stretches
 // before it, and a static solve of a free sheet under gravity has no equilibrium.
 void parse_protocol(const JsonObject& top, const std::map<std::string, Material>& materials,
@@ -203,12 +290,17 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
     const std::string ptr = "/protocol/" + std::to_string(i);
     if (!arr[i].is_object() || !arr[i].contains("step"))
       throw InputError(
-          ptr, "expected an object with a \"step\" key (stretch, impregnate, release, load)");
-    const JsonObject head(arr[i], ptr,
-                          {"step", "lambda", "hold", "pattern", "material", "resin_side",
-                           "increments", "perturbation", "seed", "gravity", "pins"});
+          ptr,
+          "expected an object with a \"step\" key (stretch, impregnate, release, load, grow, "
+          "add_springs, cut)");
+    std::vector<std::string_view> all_keys;
+    for (const auto* keys : {&kStretchKeys, &kImpregnateKeys, &kReleaseKeys, &kLoadKeys, &kGrowKeys,
+                             &kAddSpringsKeys, &kCutKeys})
+      all_keys.insert(all_keys.end(), keys->begin(), keys->end());
+    const JsonObject head(arr[i], ptr, all_keys);
     const std::string kind =
-        head.string("step", std::nullopt, {"stretch", "impregnate", "release", "load"});
+        head.string("step", std::nullopt,
+                    {"stretch", "impregnate", "release", "load", "grow", "add_springs", "cut"});
     ProtocolStep step;
     step.pointer = ptr;
     if (kind == "stretch") {
@@ -261,14 +353,56 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
     } else if (kind == "release") {
       const JsonObject o(arr[i], ptr, kReleaseKeys);
       step.kind = ProtocolStep::Kind::release;
-      step.increments = static_cast<int>(o.integer("increments", step.increments, 1, 100000));
-      step.perturbation =
-          o.number("perturbation", step.perturbation / units::mm, Bounds::non_negative()) *
-          units::mm;
-      step.seed = static_cast<std::uint64_t>(o.integer("seed", 1, 0, 2'000'000'000L));
+      parse_path(o, step);
       if (!framed) throw InputError(ptr, "release needs a stretch step before it");
       framed = false;
       check_equilibrium(ptr);
+    } else if (kind == "grow") {
+      parse_grow(JsonObject(arr[i], ptr, kGrowKeys), base_dir, scene, step);
+      check_equilibrium(ptr);
+    } else if (kind == "add_springs") {
+      const JsonObject o(arr[i], ptr, kAddSpringsKeys);
+      step.kind = ProtocolStep::Kind::add_springs;
+      const Vec2 frame(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height);
+      step.add.region = read_pattern(o.at("pattern"), o.pointer("pattern"), base_dir, frame);
+      const std::string along = o.string("along", "stretch", {"stretch", "shear", "flex", "any"});
+      step.add.along = along == "any" ? std::optional<SpringFamily>() : spring_family(along);
+      step.add.count = static_cast<int>(o.integer("count", 1, 1, 1000));
+      step.add.stiffness =
+          o.has("stiffness")
+              ? o.number("stiffness", std::nullopt, Bounds::positive()) * units::N_per_mm
+              : 0.0;
+      step.add.rest_factor = o.number("rest_factor", 1.0, Bounds{0.0, 10.0, true});
+      parse_path(o, step);
+      check_equilibrium(ptr);
+    } else if (kind == "cut") {
+      const JsonObject o(arr[i], ptr, kCutKeys);
+      step.kind = ProtocolStep::Kind::cut;
+      if (!o.has("line") && !o.has("hole"))
+        throw InputError(ptr, "a cut needs a \"line\" (polyline, mm) or a \"hole\" (pattern)");
+      // Where the sheet is now: the stretched frame, or the natural sheet when no frame holds it.
+      const Vec2 frame = framed
+                             ? Vec2(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height)
+                             : Vec2(scene.grid.width, scene.grid.height);
+      const Box2 sheet_box{Vec2::Zero(), frame};
+      auto outside = [&](const Box2& b) {
+        const Box2 in = b.intersect(sheet_box);
+        return in.empty();
+      };
+      std::ostringstream where;
+      where << "[0, " << frame.x() / units::mm << "] x [0, " << frame.y() / units::mm << "] mm";
+      if (o.has("line")) {
+        step.cut_line = read_polyline(o, "line");
+        Box2 b;
+        for (const Vec2& q : step.cut_line) b.extend(q);
+        if (outside(b))
+          throw InputError(o.pointer("line"), "the cut lies outside the sheet " + where.str());
+      }
+      if (o.has("hole")) {
+        step.hole = read_pattern(o.at("hole"), o.pointer("hole"), base_dir, frame);
+        if (outside(step.hole->bounds()))
+          throw InputError(o.pointer("hole"), "the hole lies outside the sheet " + where.str());
+      }
     } else {
       const JsonObject o(arr[i], ptr, kLoadKeys);
       step.kind = ProtocolStep::Kind::load;
@@ -397,7 +531,10 @@ std::map<std::string, std::vector<std::string>> scene_known_keys() {
           {"/protocol/*impregnate", to_strings(kImpregnateKeys)},
           {"/protocol/*release", to_strings(kReleaseKeys)},
           {"/protocol/*load", to_strings(kLoadKeys)},
-          {"/protocol/*load/pins/*", to_strings(kPinKeys)}};
+          {"/protocol/*load/pins/*", to_strings(kPinKeys)},
+          {"/protocol/*grow", to_strings(kGrowKeys)},
+          {"/protocol/*add_springs", to_strings(kAddSpringsKeys)},
+          {"/protocol/*cut", to_strings(kCutKeys)}};
 }
 
 }  // namespace membra

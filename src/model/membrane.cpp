@@ -48,6 +48,11 @@ int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges) {
 
 void update_spring(Membrane& m, int s) {
   Springs& sp = m.sheet.model.springs;
+  if (sp.family[s] == SpringFamily::added) {  // added springs keep what add_springs gave them
+    sp.rest_length[s] = m.natural_length[s];
+    sp.stiffness[s] = m.latex_stiffness[s];
+    return;
+  }
   const double l_nat = m.natural_length[s];
   const double latex_rest =
       m.releasing ? l_nat + m.release_level * (m.frame_length[s] - l_nat) : l_nat;
@@ -74,6 +79,7 @@ int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int s
   int count = 0;
   Springs& sp = model.springs;
   for (int s = 0; s < sp.size(); ++s) {
+    if (sp.family[s] == SpringFamily::added) continue;  // not part of the sheet
     const double f = fraction_inside(pattern, x.col(sp.a[s]).head<2>(), x.col(sp.b[s]).head<2>());
     if (f <= 0.0) continue;
     ++count;

@@ -29,6 +29,39 @@ TEST(Examples, ParallelStripsCurveTheWholeSheetPerpendicularStripsDoNot) {
   EXPECT_LT(perpendicular.shape.height, 0.01 * size);
 }
 
+TEST(Examples, IntrinsicGrowthGivesSaddles) {
+  // exp4: lengths along y grow towards the left and right edges; exp5: the periphery shrinks
+  // radially. Both leave the edges too long for a flat or domed sheet (measured at 41 x 41:
+  // total K -0.90 and -1.38 rad; the sin^2 field's metric has -0.3 pi = -0.94).
+  const std::vector<std::string> coarse = {"sheet.resolution=[21,21]"};
+  for (const char* name : {"exp4_intrinsic_sin2.json", "exp5_shrink.json"}) {
+    const RunResult r = run_example(name, coarse);
+    ASSERT_TRUE(r.solve.converged) << name << ": " << r.solve.message;
+    EXPECT_LT(r.curvature.total, -0.3) << name;
+    EXPECT_EQ(r.form, "anticlastic") << name;
+    EXPECT_GT(r.shape.height, 0.05 * 0.2) << name;  // it leaves the plane
+  }
+}
+
+TEST(Examples, CutAndHoleConcentrateStress) {
+  const RunResult r = run_example("exp7_cut.json", {});
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  ASSERT_EQ(r.concentrations.size(), 2u);
+  const StressConcentration& cut = r.concentrations[0];
+  const StressConcentration& hole = r.concentrations[1];
+  EXPECT_EQ(cut.kind, "cut");
+  EXPECT_EQ(hole.kind, "hole");
+  EXPECT_GT(cut.concentration, 1.8);
+  EXPECT_GT(hole.concentration, 1.8);
+  // The cut's peak sits at one of its tips: paper x = 102 / 1.5 = 68 mm, y = 50 or 90 mm.
+  const double tip =
+      std::min((cut.peak_at - Vec2(0.068, 0.05)).norm(), (cut.peak_at - Vec2(0.068, 0.09)).norm());
+  EXPECT_LT(tip, 0.008);
+  // The hole's peak is above or below it (the stretch runs along x): paper centre (133, 130) mm.
+  const Vec2 d = hole.peak_at - Vec2(0.1333, 0.13);
+  EXPECT_GT(std::abs(d.y()), std::abs(d.x()));
+}
+
 TEST(Examples, StaticSolverAndDampedRk4ReachTheSameEquilibrium) {
   // exp1 (a sheet hanging from its corners) on an 11 x 11 grid: a stable, unique equilibrium.
   const std::vector<std::string> common = {"sheet.resolution=[11,11]", "simulation.tolerance=1e-9"};

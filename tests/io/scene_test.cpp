@@ -177,7 +177,9 @@ TEST(Scene, ProtocolErrorsNameTheField) {
             "/protocol/1/pattern");
   EXPECT_EQ(error_at(with_protocol({{"strip", {{"points", {{0, 25}, {150, 25}}}, {"width", 0}}}})),
             "/protocol/1/pattern/strip/width");
-  EXPECT_EQ(error_at(with_protocol({{"circle", {}}})), "/protocol/1/pattern/circle");
+  EXPECT_EQ(error_at(with_protocol({{"blob", {}}})), "/protocol/1/pattern/blob");
+  EXPECT_EQ(error_at(with_protocol({{"circle", {{"center", {75, 25}}}}})),
+            "/protocol/1/pattern/circle/radius");
   EXPECT_EQ(
       error_at(with_protocol({{"union", {strip, {{"polygon", {{"points", {{0, 0}, {1, 1}}}}}}}}})),
       "/protocol/1/pattern/union/1/polygon/points");
@@ -224,6 +226,79 @@ TEST_F(SceneFile, ColourImageIsRejected) {
       }
     }
   }
+}
+
+// A free sheet (no gravity) and one more step.
+json with_step(const json& step) {
+  json j = minimal();
+  j["simulation"] = {{"solver", "static"}, {"G", 0}};
+  j.erase("pins");
+  j["protocol"] = {step};
+  return j;
+}
+
+// The InputError of parsing, or else of running, the scene: where and what.
+std::pair<std::string, std::string> failure(const json& j) {
+  try {
+    run_scene(parse_scene(j));
+  } catch (const InputError& e) {
+    return {e.where(), e.what()};
+  }
+  return {"", ""};
+}
+
+TEST(Scene, GrowAddSpringsAndCutErrorsNameTheField) {
+  const json grow = {{"step", "grow"}, {"factor", "1 + 0.1*sin(pi*x/w)^2"}, {"increments", 1}};
+  EXPECT_EQ(error_at(with_step(grow)), "");
+  json j = with_step(grow);
+  j["protocol"][0]["factor"] = "1 + *x";
+  EXPECT_EQ(failure(j).first, "/protocol/0/factor");
+  EXPECT_NE(failure(j).second.find("cannot parse"), std::string::npos) << failure(j).second;
+  j["protocol"][0]["factor"] = "1 - x/50";  // 0 at x = 50 mm, negative beyond
+  EXPECT_EQ(failure(j).first, "/protocol/0/factor");
+  EXPECT_NE(failure(j).second.find("positive"), std::string::npos) << failure(j).second;
+  j["protocol"][0]["factor"] = {{"preset", "sine"}};
+  EXPECT_EQ(failure(j).first, "/protocol/0/factor/preset");
+  j["protocol"][0]["factor"] = {{"image", "no-such-field.png"}, {"range", {1, 1.2}}};
+  EXPECT_EQ(failure(j).first, "/protocol/0/factor/image");
+  j["protocol"][0]["factor"] = {1, 2};
+  EXPECT_EQ(failure(j).first, "/protocol/0/factor");
+  j = with_step(grow);
+  j["protocol"][0]["direction"] = "diagonal";
+  EXPECT_EQ(failure(j).first, "/protocol/0/direction");
+
+  const json springs = {{"step", "add_springs"},
+                        {"pattern", {{"strip", {{"points", {{0, 20}, {100, 20}}}, {"width", 4}}}}},
+                        {"rest_factor", 0.9}};
+  EXPECT_EQ(failure(with_step(springs)).first, "");
+  j = with_step(springs);
+  j["protocol"][0]["rest_factor"] = 0;
+  EXPECT_EQ(failure(j).first, "/protocol/0/rest_factor");
+  j = with_step(springs);
+  j["protocol"][0]["stiffness"] = -1;
+  EXPECT_EQ(failure(j).first, "/protocol/0/stiffness");
+  j = with_step(springs);
+  j["protocol"][0]["pattern"] = {{"circle", {{"center", {55, 25}}, {"radius", 1}}}};
+  EXPECT_EQ(failure(j).first, "/protocol/0/pattern");  // between nodes: covers no spring
+
+  const json cut = {{"step", "cut"}, {"line", {{55, 10}, {55, 40}}}};
+  EXPECT_EQ(failure(with_step(cut)).first, "");
+  j = with_step(cut);
+  j["protocol"][0]["line"] = {{200, 10}, {250, 40}};
+  EXPECT_EQ(failure(j).first, "/protocol/0/line");
+  EXPECT_NE(failure(j).second.find("outside the sheet"), std::string::npos);
+  j["protocol"][0]["line"] = {{50, 10}};
+  EXPECT_EQ(failure(j).first, "/protocol/0/line");
+  j["protocol"][0]["line"] = {{52, 10}, {52, 10}};
+  EXPECT_EQ(failure(j).first, "/protocol/0/line/1");
+  j = with_step({{"step", "cut"}});
+  EXPECT_EQ(failure(j).first, "/protocol/0");
+  j = with_step({{"step", "cut"}, {"hole", {{"circle", {{"center", {50, 25}}, {"radius", 500}}}}}});
+  EXPECT_EQ(failure(j).first, "/protocol/0/hole");
+  EXPECT_NE(failure(j).second.find("whole sheet"), std::string::npos) << failure(j).second;
+  j = with_step({{"step", "cut"}, {"hole", {{"circle", {{"center", {55, 25}}, {"radius", 1}}}}}});
+  EXPECT_EQ(failure(j).first, "/protocol/0/hole");
+  EXPECT_NE(failure(j).second.find("covers no particle"), std::string::npos);
 }
 
 TEST(Scene, PatternCoveringNoSpringIsReportedWhenRun) {

@@ -9,6 +9,7 @@
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/shape.hpp"
 #include "membra/measure/stress.hpp"
+#include "membra/measure/stress_concentration.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/solve/solve_report.hpp"
 
@@ -23,9 +24,12 @@ struct PreparedScene {
 
 // What one protocol step (or the single solve of a scene without protocol) did.
 struct StepReport {
-  std::string name;       // "stretch", "impregnate", "release", "load", "solve"
-  SolveReport solve;      // the solve after the step (iterations 0 if none was needed)
-  int resin_springs = 0;  // impregnate: springs that received resin
+  std::string name;           // the step's kind ("stretch", "impregnate", ...) or "solve"
+  SolveReport solve;          // the solve after the step (iterations 0 if none was needed)
+  int resin_springs = 0;      // impregnate: springs that received resin
+  int springs_added = 0;      // add_springs
+  int springs_cut = 0;        // cut: springs a cut line removed
+  int particles_removed = 0;  // cut: particles a hole removed
 };
 
 // One recorded instant of a run, for animations and contact sheets.
@@ -47,6 +51,8 @@ struct RunResult {
   std::string form;             // classify_form(curvature)
   SpringStress stress;          // per spring, for the sheet's thickness
   std::vector<Frame> frames;    // scene.output.frames instants (dynamic solves, release path)
+  std::vector<StressFeature> features;              // the cuts and holes, in step order
+  std::vector<StressConcentration> concentrations;  // stress at each feature, final state
 };
 
 // Builds the membrane of a scene without running it (what `membra validate` checks). Throws

@@ -13,6 +13,8 @@
 
 #include "membra/geometry/grid_sheet.hpp"
 #include "membra/io/input_error.hpp"
+#include "membra/model/added_springs.hpp"
+#include "membra/model/grow.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/model/pattern.hpp"
 #include "membra/model/pins.hpp"
@@ -45,7 +47,15 @@ struct OutputSpec {
 
 // One step of the process (DESIGN.md section 2), in SI.
 struct ProtocolStep {
-  enum class Kind { stretch, impregnate, release, load } kind = Kind::stretch;
+  enum class Kind {
+    stretch,
+    impregnate,
+    release,
+    load,
+    grow,
+    add_springs,
+    cut
+  } kind = Kind::stretch;
   std::string pointer;  // "/protocol/2", for messages
   // stretch
   Vec2 lambda{1.0, 1.0};
@@ -55,10 +65,17 @@ struct ProtocolStep {
   nlohmann::json pattern_json;  // as written, for stencil export
   Material resin;
   int resin_side = +1;  // +1 top, -1 bottom
-  // release
+  // release, grow, add_springs
   int increments = 10;           // static solver: steps of the quasi-static path
   double perturbation = 0.2e-3;  // m, symmetry-breaking bump
   std::uint64_t seed = 1;
+  // grow
+  GrowSpec grow;
+  // add_springs (stiffness 0: the sheet's own stretch stiffness)
+  AddSpringsSpec add;
+  // cut: a polyline (frame coordinates, m) and/or a hole
+  std::vector<Vec2> cut_line;
+  PatternPtr hole;
   // load
   std::optional<double> gravity;  // m/s^2 along -z
   std::vector<PinSpec> pins;

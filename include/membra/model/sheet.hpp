@@ -28,6 +28,7 @@ struct Sheet {
   Model model;
   std::vector<Triangle> triangles;
   LatticeStiffness stiffness;  // N/m per family, as built
+  SheetOptions options;        // how it was built (to rebuild it when holes remove nodes)
 };
 
 // Builds the sheet: lumped masses (area x thickness x density, a quarter of each active cell to

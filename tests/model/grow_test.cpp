@@ -1,0 +1,89 @@
+// Intrinsic deformation: growth ratios along directions, and the released form of a grown sheet.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "membra/model/grow.hpp"
+#include "membra/solve/static_solver.hpp"
+
+namespace membra {
+namespace {
+
+Membrane sheet(int n, double size = 0.05) {
+  return make_membrane(build_sheet({size, size, n, n}, SheetOptions{}));
+}
+
+int spring_between(const Membrane& m, int pi, int pj, int qi, int qj) {
+  const GridSheet& g = m.sheet.grid;
+  const int a = g.particle(pi, pj), b = g.particle(qi, qj);
+  const Springs& sp = m.sheet.model.springs;
+  for (int s = 0; s < sp.size(); ++s)
+    if ((sp.a[s] == a && sp.b[s] == b) || (sp.a[s] == b && sp.b[s] == a)) return s;
+  return -1;
+}
+
+TEST(Grow, DirectionalFactorsFollowTheMetric) {
+  const Membrane m = sheet(5);
+  GrowSpec g;
+  g.factor = [](const Vec2&) { return 2.0; };
+  g.direction = GrowDirection::y;
+  const auto r = growth_ratios(m, g);
+  EXPECT_DOUBLE_EQ(r[spring_between(m, 1, 1, 2, 1)], 1.0);                     // along x: unchanged
+  EXPECT_DOUBLE_EQ(r[spring_between(m, 1, 1, 1, 2)], 2.0);                     // along y: doubled
+  EXPECT_NEAR(r[spring_between(m, 1, 1, 2, 2)], std::sqrt(5.0 / 2.0), 1e-12);  // (1, 2) / (1, 1)
+
+  // Radial about the centre: a spring pointing away from it grows, one around it does not.
+  g.direction = GrowDirection::radial;
+  g.center = Vec2(0.025, 0.025);
+  const auto rr = growth_ratios(m, g);
+  EXPECT_NEAR(rr[spring_between(m, 3, 2, 4, 2)], 2.0, 1e-12);
+  EXPECT_NEAR(rr[spring_between(m, 4, 2, 4, 3)],
+              std::hypot(2.0 * std::sin(std::atan(0.25)), std::cos(std::atan(0.25))), 1e-12);
+  g.direction = GrowDirection::hoop;
+  EXPECT_NEAR(growth_ratios(m, g)[spring_between(m, 3, 2, 4, 2)], 1.0, 1e-12);
+
+  // A family filter and a region leave the rest alone.
+  g.direction = GrowDirection::all;
+  g.family = SpringFamily::shear;
+  const auto rs = growth_ratios(m, g);
+  EXPECT_DOUBLE_EQ(rs[spring_between(m, 1, 1, 2, 1)], 1.0);
+  EXPECT_DOUBLE_EQ(rs[spring_between(m, 1, 1, 2, 2)], 2.0);
+}
+
+TEST(Grow, RejectsNonPositiveFactors) {
+  const Membrane m = sheet(5);
+  GrowSpec g;
+  g.factor = [](const Vec2& p) { return p.x() < 0.03 ? 1.0 : -0.5; };
+  try {
+    growth_ratios(m, g);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("-0.5"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Grow, UniformFactorScalesTheReleasedSheet) {
+  // With no gravity and no pins, growing every rest length by s has the sheet scaled by s as its
+  // unique stress-free shape (up to a rigid motion).
+  Membrane m = sheet(11);
+  const Points x0 = m.state.x;
+  GrowSpec g;
+  const double s = 1.25;
+  g.factor = [s](const Vec2&) { return s; };
+  const auto ratios = growth_ratios(m, g);
+  StaticOptions o;
+  o.force_scale = m.sheet.stiffness.stretch * m.sheet.grid.hx();
+  o.tolerance = 1e-12;
+  for (int k = 1; k <= 4; ++k) {
+    apply_growth(m, ratios, 0.25);
+    ASSERT_TRUE(solve_static(m.sheet.model, m.state, o).converged);
+  }
+  const Vec3 c0 = x0.rowwise().mean(), c = m.state.x.rowwise().mean();
+  double worst = 0.0;
+  for (int p = 0; p < m.sheet.model.num_particles(); ++p)
+    worst = std::max(worst, (m.state.x.col(p) - c - s * (x0.col(p) - c0)).norm());
+  EXPECT_LT(worst, 1e-6 * 0.05);
+}
+
+}  // namespace
+}  // namespace membra
