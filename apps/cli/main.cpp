@@ -57,6 +57,9 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
               << "membra: wrote only " << (out.dir() / "report.json").string() << "\n";
     return kDiverged;
   }
+  if (r.curvature_map && !r.curvature_map->message.empty())
+    std::cerr << "membra: warning: " << scene_file << ": " << r.curvature_map->step << ": "
+              << r.curvature_map->message << "\n";
   const std::string render_note = membra::stage_run_outputs(scene, r, opts, out);
   if (!render_note.empty()) std::cerr << "membra: warning: no PNG renders: " << render_note << "\n";
   out.commit();

@@ -74,6 +74,20 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                    {"max", r.stress.max_stress / units::MPa}};
     j["strain"] = {{"min", r.stress.min_strain}, {"max", r.stress.max_strain}};
     j["force"] = {{"min", r.stress.min_force}, {"max", r.stress.max_force}};
+    if (r.curvature_map) {
+      const CurvatureMapResult& cm = *r.curvature_map;
+      j["curvature_map"] = {{"step", cm.step},
+                            {"reachable", cm.reached >= 1.0},
+                            {"reached", cm.reached},
+                            {"message", cm.message},
+                            {"correlation", cm.match.correlation},
+                            {"rms_error", cm.match.rms_error * per_mm2},
+                            {"relative_rms_error", cm.match.relative_rms_error},
+                            {"mean_target", cm.match.mean_target * per_mm2},
+                            {"mean_measured", cm.match.mean_measured * per_mm2},
+                            {"interior_particles", cm.match.interior},
+                            {"margin", cm.margin / units::mm}};
+    }
     j["cuts"] = nlohmann::json::array();
     for (const StressConcentration& c : r.concentrations)
       j["cuts"].push_back({{"step", c.name},
@@ -109,6 +123,12 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
        "MPa (median largest principal stress beyond a quarter of the sheet's side)"},
       {"cuts.concentration", "1 (peak / far field)"},
       {"cuts.peak_at", "mm, paper coordinates"},
+      {"curvature_map.rms_error",
+       "1/mm^2 (measured - target Gaussian curvature over the interior particles)"},
+      {"curvature_map.mean_target", "1/mm^2"},
+      {"curvature_map.mean_measured", "1/mm^2"},
+      {"curvature_map.margin", "mm (the interior lies this far from the edge)"},
+      {"curvature_map.reached", "1 (share of the map the computed lengths carry)"},
       {"curvature.max_density", "1/mm^2"},
       {"shape.bbox_min", "mm"},
       {"shape.bbox_max", "mm"},

@@ -118,7 +118,16 @@ int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScen
 }  // namespace
 
 PreparedScene prepare_scene(const Scene& scene) {
-  PreparedScene p{make_membrane(build_sheet(scene.grid, scene.sheet)), 0, 0.0};
+  NodeMask mask;
+  if (scene.outline == "disk") {
+    // The ellipse inscribed in the rectangle, with a hair of slack so nodes on it stay.
+    const double a = 0.5 * scene.grid.width, b = 0.5 * scene.grid.height;
+    mask = [a, b](double x, double y) {
+      const double u = (x - a) / a, v = (y - b) / b;
+      return u * u + v * v <= 1.0 + 1e-9;
+    };
+  }
+  PreparedScene p{make_membrane(build_sheet(scene.grid, scene.sheet, mask)), 0, 0.0};
   p.pinned = pin(scene.pins, "/pins", p);
   Model& m = p.membrane.sheet.model;
   m.gravity = Vec3(0.0, 0.0, -scene.simulation.gravity);
@@ -129,7 +138,7 @@ PreparedScene prepare_scene(const Scene& scene) {
 }
 
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress) {
-  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}, {}, {}, {}};
+  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}, {}, {}, {}, {}};
   FrameRecorder recorder{scene.output.frames, &r.frames};
   const double thickness = r.prepared.membrane.sheet.material.thickness;
   Membrane& mem = r.prepared.membrane;
@@ -143,6 +152,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   if (scene.protocol.empty()) {
     record({"solve", solve(scene, r.prepared, s, "solve", progress, &recorder), 0});
   }
+  std::function<double(const Vec2&)> curvature_field;  // of the last curvature_map step
   for (const ProtocolStep& step : scene.protocol) {
     bool ok = true;
     switch (step.kind) {
@@ -185,6 +195,30 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
               applied = t;
             },
             progress, recorder));
+        break;
+      }
+      case ProtocolStep::Kind::curvature_map: {
+        const Model& model = mem.sheet.model;
+        std::vector<double> target(static_cast<size_t>(model.num_particles()));
+        for (int q = 0; q < model.num_particles(); ++q)
+          target[q] = step.curvature(model.reference.col(q).head<2>());
+        const ConformalFactor cf = conformal_factor(mem.sheet, target);
+        CurvatureMapResult cm;
+        cm.step = step.pointer;
+        cm.reached = cf.reached;
+        cm.message = cf.message;
+        r.curvature_map = cm;
+        const std::vector<double> ratios = conformal_growth(model, cf.u);
+        perturb(mem, step.perturbation, step.seed);
+        double applied = 0.0;
+        ok = record(follow_path(
+            scene, r.prepared, s, "curvature_map", step.increments,
+            [&](double t) {
+              apply_growth(mem, ratios, t - applied);
+              applied = t;
+            },
+            progress, recorder));
+        curvature_field = step.curvature;
         break;
       }
       case ProtocolStep::Kind::add_springs: {
@@ -252,6 +286,16 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   smooth_density_on_grid(mem.sheet.grid, r.curvature);
   r.form = classify_form(r.curvature);
   r.stress = spring_stress(m, s.x, mem.sheet.material.thickness);
+  if (r.curvature_map) {
+    // Compared over the interior: a tenth of the sheet's smaller side in from the edge, where
+    // the edge's own (geodesic) curvature and the smoothing of the measure do not reach.
+    CurvatureMapResult& cm = *r.curvature_map;
+    cm.target.resize(static_cast<size_t>(m.num_particles()));
+    for (int q = 0; q < m.num_particles(); ++q)
+      cm.target[q] = curvature_field(m.reference.col(q).head<2>());
+    cm.margin = 0.1 * std::min(mem.sheet.grid.width(), mem.sheet.grid.height());
+    cm.match = match_curvature(mem.sheet, cm.target, r.curvature.density, cm.margin);
+  }
   if (!r.features.empty()) {
     // Peak within 1.5 spacings (the particles on the new edge) against the median far away.
     const GridSheet& g = mem.sheet.grid;

@@ -1,5 +1,6 @@
 #include "membra/io/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -22,8 +23,8 @@ const std::vector<std::string_view> kTopKeys = {"$schema",    "name",      "desc
                                                 "simulation", "protocol",  "output"};
 const std::vector<std::string_view> kOutputKeys = {"frames", "camera", "image_size"};
 const std::vector<std::string_view> kCameraKeys = {"azimuth", "elevation"};
-const std::vector<std::string_view> kSheetKeys = {"size", "resolution", "material", "springs",
-                                                  "bending"};
+const std::vector<std::string_view> kSheetKeys = {"size",    "resolution", "material",
+                                                  "springs", "bending",    "outline"};
 const std::vector<std::string_view> kStretchKeys = {"step", "lambda", "hold"};
 const std::vector<std::string_view> kImpregnateKeys = {"step", "pattern", "material", "resin_side"};
 const std::vector<std::string_view> kReleaseKeys = {"step", "increments", "perturbation", "seed"};
@@ -35,6 +36,8 @@ const std::vector<std::string_view> kAddSpringsKeys = {"step",       "pattern", 
                                                        "count",      "stiffness",    "rest_factor",
                                                        "increments", "perturbation", "seed"};
 const std::vector<std::string_view> kCutKeys = {"step", "line", "hole"};
+const std::vector<std::string_view> kCurvatureMapKeys = {"step", "K", "increments", "perturbation",
+                                                         "seed"};
 const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
 const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
@@ -118,6 +121,7 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
                                                     "(latex, epoxy)");
   scene.sheet.material = it->second;
   scene.sheet.bending = sheet.boolean("bending", true);
+  scene.outline = sheet.string("outline", "rectangle", {"rectangle", "disk"});
   if (sheet.has("springs")) {
     const JsonObject springs = sheet.object("springs", kSpringKeys);
     scene.sheet.stretch = springs.boolean("stretch", true);
@@ -292,15 +296,18 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
       throw InputError(
           ptr,
           "expected an object with a \"step\" key (stretch, impregnate, release, load, grow, "
-          "add_springs, cut)");
+          "add_springs, cut, curvature_map)");
+    // Any step's key passes here; each kind then checks its own.
     std::vector<std::string_view> all_keys;
     for (const auto* keys : {&kStretchKeys, &kImpregnateKeys, &kReleaseKeys, &kLoadKeys, &kGrowKeys,
-                             &kAddSpringsKeys, &kCutKeys})
+                             &kAddSpringsKeys, &kCutKeys, &kCurvatureMapKeys})
       all_keys.insert(all_keys.end(), keys->begin(), keys->end());
+    std::sort(all_keys.begin(), all_keys.end());
+    all_keys.erase(std::unique(all_keys.begin(), all_keys.end()), all_keys.end());
     const JsonObject head(arr[i], ptr, all_keys);
-    const std::string kind =
-        head.string("step", std::nullopt,
-                    {"stretch", "impregnate", "release", "load", "grow", "add_springs", "cut"});
+    const std::string kind = head.string("step", std::nullopt,
+                                         {"stretch", "impregnate", "release", "load", "grow",
+                                          "add_springs", "cut", "curvature_map"});
     ProtocolStep step;
     step.pointer = ptr;
     if (kind == "stretch") {
@@ -359,6 +366,33 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
       check_equilibrium(ptr);
     } else if (kind == "grow") {
       parse_grow(JsonObject(arr[i], ptr, kGrowKeys), base_dir, scene, step);
+      check_equilibrium(ptr);
+    } else if (kind == "curvature_map") {
+      const JsonObject o(arr[i], ptr, kCurvatureMapKeys);
+      step.kind = ProtocolStep::Kind::curvature_map;
+      FormulaContext ctx;
+      ctx.size = Vec2(scene.grid.width, scene.grid.height);
+      ctx.center = 0.5 * ctx.size;
+      const ScalarField per_mm2 = read_field(o.at("K"), o.pointer("K"), base_dir, ctx);
+      step.curvature = [per_mm2](const Vec2& p) { return per_mm2(p) / (units::mm * units::mm); };
+      for (int jj = 0; jj < scene.grid.ny; ++jj)
+        for (int ii = 0; ii < scene.grid.nx; ++ii) {
+          const Vec2 q(scene.grid.width * ii / (scene.grid.nx - 1),
+                       scene.grid.height * jj / (scene.grid.ny - 1));
+          double k = 0.0;
+          try {
+            k = per_mm2(q);
+          } catch (const std::invalid_argument& e) {
+            throw InputError(o.pointer("K"), e.what());
+          }
+          if (!std::isfinite(k)) {
+            std::ostringstream msg;
+            msg << "K is " << k << " at (" << q.x() / units::mm << ", " << q.y() / units::mm
+                << ") mm; it must be a finite number (1/mm^2) everywhere";
+            throw InputError(o.pointer("K"), msg.str());
+          }
+        }
+      parse_path(o, step);
       check_equilibrium(ptr);
     } else if (kind == "add_springs") {
       const JsonObject o(arr[i], ptr, kAddSpringsKeys);
@@ -534,7 +568,8 @@ std::map<std::string, std::vector<std::string>> scene_known_keys() {
           {"/protocol/*load/pins/*", to_strings(kPinKeys)},
           {"/protocol/*grow", to_strings(kGrowKeys)},
           {"/protocol/*add_springs", to_strings(kAddSpringsKeys)},
-          {"/protocol/*cut", to_strings(kCutKeys)}};
+          {"/protocol/*cut", to_strings(kCutKeys)},
+          {"/protocol/*curvature_map", to_strings(kCurvatureMapKeys)}};
 }
 
 }  // namespace membra

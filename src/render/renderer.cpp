@@ -302,6 +302,24 @@ Image draw_pattern(const Pattern& pattern, const Box2& frame, double pixels_per_
   return img;
 }
 
+void blit(Image& dst, const Image& src, int x, int y) {
+  for (int row = 0; row < src.height; ++row) {
+    const int ty = y + row;
+    if (ty < 0 || ty >= dst.height) continue;
+    for (int col = 0; col < src.width; ++col) {
+      const int tx = x + col;
+      if (tx < 0 || tx >= dst.width) continue;
+      const size_t from = (static_cast<size_t>(row) * src.width + col) * 3;
+      const size_t to = (static_cast<size_t>(ty) * dst.width + tx) * 3;
+      std::copy_n(&src.rgb[from], 3, &dst.rgb[to]);
+    }
+  }
+}
+
+Image blank_image(int width, int height) {
+  return {width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 3, 255)};
+}
+
 std::vector<std::uint8_t> encode_png(const Image& image) {
   std::vector<std::uint8_t> png;
   stbi_write_png_to_func(

@@ -63,6 +63,29 @@ std::string stage_run_outputs(const Scene& scene, const RunResult& r, const Pict
     picture("curvature.png", k_colors, {"Gaussian curvature", "1/mm^2", k_lo, k_hi});
     picture("stress.png", colorize(stress_mpa, s_lo, s_hi),
             {"Stress (tension red)", "MPa", s_lo, s_hi});
+    if (r.curvature_map) {
+      // Side by side on one colour range: the target map and the measured curvature on the flat
+      // sheet (seen from above), and the form.
+      std::vector<double> target_mm;
+      for (double k : r.curvature_map->target) target_mm.push_back(k * 1e-6);
+      auto [t_lo, t_hi] = symmetric_range(target_mm, 1e-6);
+      if (opts.curvature_range.size() == 2)
+        t_lo = opts.curvature_range[0], t_hi = opts.curvature_range[1];
+      const int pw = 800, ph = 700;
+      Renderer panel(pw, ph);
+      const Camera above{-90.0, 89.9, 1.1};
+      const std::vector<Rgb> measured = colorize(k_mm, t_lo, t_hi);
+      Image side = blank_image(3 * pw, ph);
+      blit(side,
+           panel.render(mesh.model.reference, mesh.triangles, colorize(target_mm, t_lo, t_hi),
+                        above, nullptr),
+           0, 0);
+      blit(side, panel.render(mesh.model.reference, mesh.triangles, measured, above, nullptr), pw,
+           0);
+      const Legend legend{"Target | measured | form", "1/mm^2", t_lo, t_hi};
+      blit(side, panel.render(x, mesh.triangles, measured, camera, &legend), 2 * pw, 0);
+      add_png("curvature_map.png", side);
+    }
     if (!r.frames.empty()) {
       // Frames share one stress range; the contact sheet tiles them six to a row (the paper's
       // figure 8 shows 24).
@@ -75,8 +98,7 @@ std::string stage_run_outputs(const Scene& scene, const RunResult& r, const Pict
       const int rows = (static_cast<int>(r.frames.size()) + cols - 1) / cols;
       const int tw = 400, th = 300;
       Renderer tiles(tw, th);
-      Image sheet{cols * tw, rows * th,
-                  std::vector<std::uint8_t>(static_cast<size_t>(cols * tw) * rows * th * 3, 255)};
+      Image sheet = blank_image(cols * tw, rows * th);
       for (size_t i = 0; i < r.frames.size(); ++i) {
         std::vector<double> mpa;
         for (double v : r.frames[i].stress) mpa.push_back(v * 1e-6);
@@ -84,11 +106,8 @@ std::string stage_run_outputs(const Scene& scene, const RunResult& r, const Pict
         char name[64];
         std::snprintf(name, sizeof name, "frames/frame_%03zu.png", i + 1);
         add_png(name, renderer.render(r.frames[i].x, mesh.triangles, colors, camera, &legend));
-        const Image tile = tiles.render(r.frames[i].x, mesh.triangles, colors, camera, nullptr);
-        const int ox = static_cast<int>(i) % cols * tw, oy = static_cast<int>(i) / cols * th;
-        for (int yy = 0; yy < th; ++yy)
-          std::copy_n(&tile.rgb[static_cast<size_t>(yy) * tw * 3], tw * 3,
-                      &sheet.rgb[(static_cast<size_t>(oy + yy) * sheet.width + ox) * 3]);
+        blit(sheet, tiles.render(r.frames[i].x, mesh.triangles, colors, camera, nullptr),
+             static_cast<int>(i) % cols * tw, static_cast<int>(i) / cols * th);
       }
       add_png("contact_sheet.png", sheet);
     }

@@ -62,6 +62,16 @@ TEST(Examples, CutAndHoleConcentrateStress) {
   EXPECT_GT(std::abs(d.y()), std::abs(d.x()));
 }
 
+TEST(Examples, CurvatureMapIsCarriedIntoTheForm) {
+  // exp6: the PNG map (positive cap, negative ring), released and hung from its corners
+  // (measured at 41 x 41: correlation 0.96 after the load, 0.99 before).
+  const RunResult r = run_example("exp6_curvature_map.json", {"sheet.resolution=[21,21]"});
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  ASSERT_TRUE(r.curvature_map);
+  EXPECT_EQ(r.curvature_map->reached, 1.0);
+  EXPECT_GT(r.curvature_map->match.correlation, 0.85);
+}
+
 TEST(Examples, StaticSolverAndDampedRk4ReachTheSameEquilibrium) {
   // exp1 (a sheet hanging from its corners) on an 11 x 11 grid: a stable, unique equilibrium.
   const std::vector<std::string> common = {"sheet.resolution=[11,11]", "simulation.tolerance=1e-9"};

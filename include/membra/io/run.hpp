@@ -2,6 +2,7 @@
 // Running a scene: build the membrane, apply pins and loads, carry out the protocol (solving for
 // equilibrium after every step that changes it), summarise.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "membra/measure/shape.hpp"
 #include "membra/measure/stress.hpp"
 #include "membra/measure/stress_concentration.hpp"
+#include "membra/model/curvature_map.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/solve/solve_report.hpp"
 
@@ -38,6 +40,17 @@ struct Frame {
   std::vector<double> stress;  // mean spring stress at each particle, Pa
 };
 
+// A curvature_map step's outcome: the target, how much of it was reachable, how well the final
+// form matches it.
+struct CurvatureMapResult {
+  std::string step;            // "/protocol/N"
+  std::vector<double> target;  // 1/m^2 per particle of the final sheet
+  double reached = 1.0;        // share of the map the conformal factor carries
+  std::string message;         // why not all of it, when reached < 1
+  double margin = 0.0;         // m: the interior compared lies this far from the edge
+  CurvatureMatch match;
+};
+
 struct RunResult {
   PreparedScene prepared;  // prepared.membrane.state holds the final state
   SolveReport solve;       // totals over all solves; residual and convergence of the last
@@ -53,6 +66,7 @@ struct RunResult {
   std::vector<Frame> frames;    // scene.output.frames instants (dynamic solves, release path)
   std::vector<StressFeature> features;              // the cuts and holes, in step order
   std::vector<StressConcentration> concentrations;  // stress at each feature, final state
+  std::optional<CurvatureMapResult> curvature_map;  // scenes with a curvature_map step
 };
 
 // Builds the membrane of a scene without running it (what `membra validate` checks). Throws

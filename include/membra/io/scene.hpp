@@ -4,6 +4,7 @@
 // The format is documented in docs/scene.md and docs/scene.schema.json.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -54,7 +55,8 @@ struct ProtocolStep {
     load,
     grow,
     add_springs,
-    cut
+    cut,
+    curvature_map
   } kind = Kind::stretch;
   std::string pointer;  // "/protocol/2", for messages
   // stretch
@@ -73,6 +75,8 @@ struct ProtocolStep {
   GrowSpec grow;
   // add_springs (stiffness 0: the sheet's own stretch stiffness)
   AddSpringsSpec add;
+  // curvature_map: the target Gaussian curvature (1/m^2) at a paper position (m)
+  std::function<double(const Vec2&)> curvature;
   // cut: a polyline (frame coordinates, m) and/or a hole
   std::vector<Vec2> cut_line;
   PatternPtr hole;
@@ -85,8 +89,9 @@ struct Scene {
   std::filesystem::path file;  // where it was read from (empty for in-memory scenes)
   std::string name;
   std::string description;
-  GridSpec grid;       // SI
-  SheetOptions sheet;  // material in SI, K override in N/m
+  GridSpec grid;                      // SI
+  SheetOptions sheet;                 // material in SI, K override in N/m
+  std::string outline = "rectangle";  // or "disk": the ellipse inscribed in the rectangle
   std::vector<PinSpec> pins;
   SimulationSpec simulation;
   OutputSpec output;

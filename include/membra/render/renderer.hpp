@@ -65,6 +65,11 @@ class Renderer {
 // `pixels_per_mm` pixels per mm (CPU, no OpenGL needed).
 Image draw_pattern(const Pattern& pattern, const Box2& frame, double pixels_per_mm);
 
+// Copies `src` into `dst` with its top-left corner at (x, y), clipped to dst.
+void blit(Image& dst, const Image& src, int x, int y);
+// An image of the given size filled with white.
+Image blank_image(int width, int height);
+
 // The image encoded as PNG bytes.
 std::vector<std::uint8_t> encode_png(const Image& image);
 // Writes an image as PNG. Throws RenderError naming the file on failure.
