@@ -1,6 +1,7 @@
 #include "membra/io/run.hpp"
 
 #include "membra/io/input_error.hpp"
+#include "membra/io/memory_estimate.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/added_springs.hpp"
 #include "membra/model/cut.hpp"
@@ -118,6 +119,7 @@ int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScen
 }  // namespace
 
 PreparedScene prepare_scene(const Scene& scene) {
+  check_memory(scene, machine_memory());  // before allocating anything
   NodeMask mask;
   if (scene.outline == "disk") {
     // The ellipse inscribed in the rectangle, with a hair of slack so nodes on it stay.

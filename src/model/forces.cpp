@@ -3,10 +3,6 @@
 #include <algorithm>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "membra/model/bend_kernel.hpp"
 #include "membra/model/spring_kernel.hpp"
 
@@ -37,28 +33,28 @@ void add_bending_forces(const Model& model, const Points& x, int begin, int end,
   }
 }
 
-// Springs and bending. Large sheets split the elements between threads, each summing into its
-// own buffer; the buffers are added in thread order, so results do not depend on timing.
+// Springs and bending. Large sheets split the elements into a fixed number of chunks, each
+// summed into its own buffer, the buffers added in chunk order: the result is the same bit for
+// bit whatever the number of threads (and whichever thread takes which chunk).
 void add_elastic_forces(const Model& model, const Points& x, const Points* v, Points& f) {
   const int ns = model.springs.size(), nb = model.bending.size();
-#ifdef _OPENMP
   constexpr int kParallelParticles = 2000;  // below this, threads cost more than they save
-  const int threads = omp_get_max_threads();
-  if (threads > 1 && model.num_particles() >= kParallelParticles) {
-    std::vector<Points> partial(static_cast<size_t>(threads));
-#pragma omp parallel num_threads(threads)
-    {
-      const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-      Points& ft = partial[static_cast<size_t>(t)];
-      ft.setZero(3, x.cols());
-      add_spring_forces(model, x, v, ns * t / nt, ns * (t + 1) / nt, ft);
-      add_bending_forces(model, x, nb * t / nt, nb * (t + 1) / nt, ft);
+  constexpr int kChunks = 4;
+  if (model.num_particles() >= kParallelParticles) {
+    // Reused between passes; a reference, so every thread of the region sees the caller's.
+    thread_local std::vector<Points> buffers;
+    std::vector<Points>& partial = buffers;
+    partial.resize(kChunks);
+#pragma omp parallel for schedule(static)
+    for (int c = 0; c < kChunks; ++c) {
+      Points& fc = partial[static_cast<size_t>(c)];
+      fc.setZero(3, x.cols());
+      add_spring_forces(model, x, v, ns * c / kChunks, ns * (c + 1) / kChunks, fc);
+      add_bending_forces(model, x, nb * c / kChunks, nb * (c + 1) / kChunks, fc);
     }
-    for (const Points& ft : partial)
-      if (ft.cols() == f.cols()) f += ft;
+    for (const Points& fc : partial) f += fc;
     return;
   }
-#endif
   add_spring_forces(model, x, v, 0, ns, f);
   add_bending_forces(model, x, 0, nb, f);
 }

@@ -8,15 +8,6 @@
 #include "membra/solve/integrator.hpp"
 
 namespace membra {
-namespace {
-
-double extent(const Points& x) {
-  if (x.cols() == 0) return 0.0;
-  return (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).norm();
-}
-
-}  // namespace
-
 SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions& o) {
   auto integrator = make_integrator(o.method);
   if (!integrator) throw std::invalid_argument("unknown integrator '" + o.method + "'");
@@ -29,7 +20,7 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
   auto seconds = [&] { return clock.seconds(); };
   // Explicit instability grows positions exponentially; a sheet 100x its initial size, or any
   // NaN, is a blow-up, never a form.
-  const double size0 = std::max(extent(state.x), 1e-12);
+  const double size0 = std::max(sheet_extent(state.x), 1e-12);
 
   SolveReport r;
   int small_in_a_row = 0;
@@ -39,7 +30,7 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
     r.force_passes += integrator->force_passes_per_step();
     if (step % check_every != 0 && step != o.steps) continue;
 
-    if (!state.x.allFinite() || !state.v.allFinite() || extent(state.x) > 100.0 * size0) {
+    if (!state.x.allFinite() || !state.v.allFinite() || sheet_extent(state.x) > 100.0 * size0) {
       r.diverged = true;
       std::ostringstream msg;
       msg << o.method << " diverged at step " << step << " (t = " << state.time

@@ -187,7 +187,8 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
     r.residual_relative = r.residual / o.force_scale;
     if (!std::isfinite(r.residual)) {
       r.diverged = true;
-      r.message = "newton: forces became NaN/Inf at iteration " + std::to_string(it);
+      r.message = "newton diverged at iteration " + std::to_string(it) +
+                  ": forces became NaN/Inf. Try the static solver (the default).";
       break;
     }
     if (o.progress) o.progress({"", it, o.max_iterations, r.residual_relative, seconds()});

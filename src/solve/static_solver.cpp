@@ -49,6 +49,7 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
   int n_positive = 0;
 
   Points& x = state.x;
+  const double size0 = std::max(sheet_extent(x), 1e-12);
   Points v = Points::Zero(3, n), f;
   SolveReport r;
   compute_static_forces(model, x, f);
@@ -90,12 +91,14 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
     const double res = max_free_force(model, f);
     r.residual = res;
     r.residual_relative = res / o.force_scale;
-    if (!std::isfinite(res)) {
+    if (!std::isfinite(res) || !x.allFinite() || sheet_extent(x) > 100.0 * size0) {
       r.diverged = true;
       std::ostringstream msg;
-      msg << "static solver diverged at iteration " << it
-          << ": forces became NaN/Inf. Check for coincident particles or extreme stiffness "
-             "contrast, or try rk4 with damping.";
+      msg << "static solver diverged at iteration " << it << ": "
+          << (std::isfinite(res) && x.allFinite() ? "the sheet blew up (100x its size)"
+                                                  : "forces became NaN/Inf")
+          << ". Check for coincident particles or extreme stiffness contrast, give a free "
+             "sheet pins, or try rk4 with damping D.";
       r.message = msg.str();
       r.wall_seconds = seconds();
       return r;

@@ -6,6 +6,7 @@
 
 #include "test_util.hpp"
 
+#include "membra/io/memory_estimate.hpp"
 #include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
 
@@ -323,6 +324,30 @@ TEST(Scene, PinsThatSelectNothingAreReportedAtPins) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.where(), "/pins");
   }
+}
+
+}  // namespace
+}  // namespace membra
+
+namespace membra {
+namespace {
+
+TEST(MemoryEstimate, RefusesGridsTheMachineCannotHold) {
+  Scene s = parse_scene(minimal());
+  s.grid.nx = s.grid.ny = 1001;  // a million particles
+  EXPECT_NEAR(estimate_memory(s), 1.0e6 * 2.5e3 + 64e6, 1e7);
+  EXPECT_NO_THROW(check_memory(s, 8e9));
+  try {
+    check_memory(s, 1e9);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/sheet/resolution");
+    EXPECT_NE(std::string(e.what()).find("2.57 GB"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("1 GB"), std::string::npos) << e.what();
+  }
+  s.simulation.solver = "newton";
+  EXPECT_THROW(check_memory(s, 8e9), InputError);
+  EXPECT_GT(machine_memory(), 1e8);  // this machine reports its memory
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <string>
 
+#include "membra/geometry/vec.hpp"
+
 namespace membra {
 
 struct SolveReport {
@@ -15,6 +17,9 @@ struct SolveReport {
   long force_passes = 0;           // full force evaluations
   double wall_seconds = 0.0;
 };
+
+// Diagonal of the bounding box of the positions, m: a sheet 100x its initial extent has blown up.
+double sheet_extent(const Points& x);
 
 // Wall time since construction, for the reports.
 class Stopwatch {
