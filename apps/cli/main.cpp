@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench_command.hpp"
 #include "membra/io/input_error.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/report.hpp"
@@ -106,6 +107,19 @@ int main(int argc, char** argv) {
   validate->add_option("--set", sets, set_help)->type_name("PATH=VALUE");
   validate->add_flag("--quiet,-q", quiet, "Print nothing when the scene is valid");
 
+  membra::cli::BenchArgs bench_args;
+  auto* bench = app.add_subcommand(
+      "bench", "Run membra's solvers side by side on the benchmark problem P(n)");
+  bench->add_option("--sizes", bench_args.sizes, "Grid sizes n (n x n particles)")
+      ->delimiter(',')
+      ->check(CLI::Range(3, 4096));
+  bench->add_option("--solvers", bench_args.solvers, "static, dr_unit, newton, rk4")
+      ->delimiter(',');
+  bench->add_option("--budget", bench_args.budget, "Wall-time budget per run, s")
+      ->check(CLI::PositiveNumber);
+  bench->add_flag("--json", bench_args.json, "Machine-readable output on stdout");
+  bench->add_flag("--quiet,-q", bench_args.quiet, "No per-run log on stderr");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -121,6 +135,7 @@ int main(int argc, char** argv) {
       return cmd_run(scene_file, sets, out_dir, quiet, run_opts);
     }
     if (*validate) return cmd_validate(scene_file, sets, quiet);
+    if (*bench) return membra::cli::cmd_bench(bench_args);
   } catch (const membra::InputError& e) {
     std::cerr << "membra: error: " << e.what() << "\n";
     return kBadInput;

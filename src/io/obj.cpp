@@ -1,7 +1,11 @@
 #include "membra/io/obj.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
 
+#include "membra/io/input_error.hpp"
 #include "membra/model/units.hpp"
 
 namespace membra {
@@ -16,6 +20,68 @@ void write_obj(std::ostream& out, const Points& x, const std::vector<Triangle>& 
   }
   for (const Triangle& t : triangles)
     out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+}
+
+namespace {
+
+constexpr size_t kMaxObjVertices = 50'000'000;  // far beyond a design target; bounds memory
+
+[[noreturn]] void obj_error(const std::string& where, long line, const std::string& what) {
+  throw InputError(where, "line " + std::to_string(line) + ": " + what);
+}
+
+}  // namespace
+
+ObjMesh read_obj(std::istream& in, const std::string& where) {
+  std::vector<Vec3> v;
+  std::vector<Triangle> tris;
+  std::string text;
+  long line = 0;
+  while (std::getline(in, text)) {
+    ++line;
+    std::istringstream ls(text);
+    std::string kind;
+    if (!(ls >> kind) || kind[0] == '#') continue;
+    if (kind == "v") {
+      double c[3];
+      for (double& ci : c) {
+        std::string tok;
+        if (!(ls >> tok)) obj_error(where, line, "a vertex needs x y z");
+        char* end = nullptr;
+        ci = std::strtod(tok.c_str(), &end);
+        if (end == tok.c_str() || *end != '\0' || !std::isfinite(ci))
+          obj_error(where, line, "'" + tok + "' is not a finite number");
+      }
+      if (v.size() >= kMaxObjVertices) obj_error(where, line, "too many vertices");
+      v.emplace_back(c[0] * units::mm, c[1] * units::mm, c[2] * units::mm);
+    } else if (kind == "f") {
+      std::vector<int> corner;
+      std::string tok;
+      while (ls >> tok) {
+        const std::string head = tok.substr(0, tok.find('/'));
+        char* end = nullptr;
+        const long k = std::strtol(head.c_str(), &end, 10);
+        if (head.empty() || *end != '\0' || k == 0)
+          obj_error(where, line, "'" + tok + "' is not a vertex index");
+        const long n = static_cast<long>(v.size());
+        const long idx = k > 0 ? k - 1 : n + k;  // negative: relative to the end
+        if (idx < 0 || idx >= n)
+          obj_error(where, line,
+                    "vertex index " + std::to_string(k) + " is out of range (" + std::to_string(n) +
+                        " vertices so far)");
+        corner.push_back(static_cast<int>(idx));
+      }
+      if (corner.size() < 3) obj_error(where, line, "a face needs at least 3 corners");
+      for (size_t c = 1; c + 1 < corner.size(); ++c)
+        tris.emplace_back(corner[0], corner[c], corner[c + 1]);
+    }
+  }
+  if (tris.empty()) throw InputError(where, "no faces: an OBJ target needs triangles");
+  ObjMesh mesh;
+  mesh.x.resize(3, static_cast<Eigen::Index>(v.size()));
+  for (size_t i = 0; i < v.size(); ++i) mesh.x.col(static_cast<Eigen::Index>(i)) = v[i];
+  mesh.triangles = std::move(tris);
+  return mesh;
 }
 
 }  // namespace membra

@@ -88,6 +88,14 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                             {"interior_particles", cm.match.interior},
                             {"margin", cm.margin / units::mm}};
     }
+    const StabilityReport& st = r.stability;
+    j["stability"] = {{"checked", st.checked},
+                      {"stable", st.stable},
+                      {"min_eigenvalue", st.min_eigenvalue / units::N_per_mm},
+                      {"lower_bound", st.lower_bound / units::N_per_mm},
+                      {"shift", st.shift / units::N_per_mm},
+                      {"seconds", st.seconds},
+                      {"message", st.message}};
     j["cuts"] = nlohmann::json::array();
     for (const StressConcentration& c : r.concentrations)
       j["cuts"].push_back({{"step", c.name},
@@ -123,6 +131,9 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
        "MPa (median largest principal stress beyond a quarter of the sheet's side)"},
       {"cuts.concentration", "1 (peak / far field)"},
       {"cuts.peak_at", "mm, paper coordinates"},
+      {"stability.min_eigenvalue",
+       "N/mm (upper bound of the energy Hessian's smallest eigenvalue when unstable, else 0)"},
+      {"stability.shift", "N/mm (stable means Hessian + shift I is positive definite)"},
       {"curvature_map.rms_error",
        "1/mm^2 (measured - target Gaussian curvature over the interior particles)"},
       {"curvature_map.mean_target", "1/mm^2"},

@@ -4,6 +4,7 @@
 #include "membra/io/memory_estimate.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/added_springs.hpp"
+#include "membra/model/benchmark_problem.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/model/grow.hpp"
@@ -120,6 +121,23 @@ int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScen
 
 PreparedScene prepare_scene(const Scene& scene) {
   check_memory(scene, machine_memory());  // before allocating anything
+  if (scene.benchmark_n > 0) {
+    // P(n): spacing 1 m, k = 1 N/m, unit masses; the force scale k x h = 1 N makes the
+    // tolerance absolute, as the problem defines it.
+    BenchmarkProblem b = make_benchmark_problem(scene.benchmark_n);
+    const GridSheet grid(scene.grid);
+    Sheet sheet{grid,
+                scene.sheet.material,
+                std::move(b.model),
+                std::move(b.triangles),
+                LatticeStiffness{1.0, 0.5, 0.1},
+                scene.sheet};
+    PreparedScene p{make_membrane(std::move(sheet)), 0, 1.0};
+    p.membrane.state = b.start;
+    p.membrane.sheet.model.gravity = Vec3::Zero();
+    p.membrane.sheet.model.velocity_damping = scene.simulation.damping;
+    return p;
+  }
   NodeMask mask;
   if (scene.outline == "disk") {
     // The ellipse inscribed in the rectangle, with a hair of slack so nodes on it stay.
@@ -140,7 +158,7 @@ PreparedScene prepare_scene(const Scene& scene) {
 }
 
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress) {
-  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}, {}, {}, {}, {}};
+  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   FrameRecorder recorder{scene.output.frames, &r.frames};
   const double thickness = r.prepared.membrane.sheet.material.thickness;
   Membrane& mem = r.prepared.membrane;
@@ -288,6 +306,8 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   smooth_density_on_grid(mem.sheet.grid, r.curvature);
   r.form = classify_form(r.curvature);
   r.stress = spring_stress(m, s.x, mem.sheet.material.thickness);
+  // A small residual does not tell a minimum from a soft saddle.
+  r.stability = check_stability(m, s.x, mem.sheet.stiffness.stretch);
   if (r.curvature_map) {
     // Compared over the interior: a tenth of the sheet's smaller side in from the edge, where
     // the edge's own (geodesic) curvature and the smoothing of the measure do not reach.

@@ -18,9 +18,10 @@ namespace {
 using nlohmann::json;
 
 // Known keys, one list per object; scene_known_keys() exposes them for the schema test.
-const std::vector<std::string_view> kTopKeys = {"$schema",    "name",      "description",
-                                                "sheet",      "materials", "pins",
-                                                "simulation", "protocol",  "output"};
+const std::vector<std::string_view> kBenchmarkKeys = {"problem", "n"};
+const std::vector<std::string_view> kTopKeys = {"benchmark", "$schema",   "name", "description",
+                                                "sheet",     "materials", "pins", "simulation",
+                                                "protocol",  "output"};
 const std::vector<std::string_view> kOutputKeys = {"frames", "camera", "image_size"};
 const std::vector<std::string_view> kCameraKeys = {"azimuth", "elevation"};
 const std::vector<std::string_view> kSheetKeys = {"size",    "resolution", "material",
@@ -475,7 +476,20 @@ Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   scene.name = top.string("name", "untitled");
   scene.description = top.string("description", "");
   const auto materials = parse_materials(j);
-  parse_sheet(top, materials, scene);
+  if (top.has("benchmark")) {
+    // The benchmark problem builds its own sheet; it is solved once, as it is.
+    const JsonObject b = top.object("benchmark", kBenchmarkKeys);
+    b.string("problem", "P", {"P"});
+    scene.benchmark_n = static_cast<int>(b.integer("n", std::nullopt, 3, kMaxNodesPerSide));
+    for (const char* key : {"sheet", "protocol", "pins", "materials"})
+      if (top.has(key))
+        throw InputError(std::string("/") + key,
+                         "a benchmark scene builds its own sheet: remove this key");
+    scene.grid = {static_cast<double>(scene.benchmark_n - 1),
+                  static_cast<double>(scene.benchmark_n - 1), scene.benchmark_n, scene.benchmark_n};
+  } else {
+    parse_sheet(top, materials, scene);
+  }
   parse_pins(top, scene, scene.pins);
   parse_simulation(top, scene);
   parse_protocol(top, materials, base_dir, scene);
@@ -554,6 +568,7 @@ Box2 scene_frame(const Scene& scene) {
 
 std::map<std::string, std::vector<std::string>> scene_known_keys() {
   return {{"", to_strings(kTopKeys)},
+          {"/benchmark", to_strings(kBenchmarkKeys)},
           {"/sheet", to_strings(kSheetKeys)},
           {"/sheet/springs", to_strings(kSpringKeys)},
           {"/materials/*", to_strings(kMaterialKeys)},

@@ -47,6 +47,7 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
     if (o.on_check) o.on_check(state, step);
     if (o.progress) o.progress({"", step, o.steps, r.residual_relative, seconds()});
     if (o.stop_when_converged && small_in_a_row >= o.confirm_checks) break;
+    if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
   }
   if (r.iterations == 0) {
     r.residual = max_residual_force(model, state.x);

@@ -193,6 +193,7 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
     }
     if (o.progress) o.progress({"", it, o.max_iterations, r.residual_relative, seconds()});
     if (r.residual_relative <= o.tolerance || it >= o.max_iterations || ndof == 0) break;
+    if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
 
     assembler.assemble(x, 0.0);
     double shifted = 0.0;

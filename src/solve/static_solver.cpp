@@ -1,5 +1,6 @@
 #include "membra/solve/static_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -39,7 +40,9 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
   const Stopwatch clock;
   auto seconds = [&] { return clock.seconds(); };
   const int n = model.num_particles();
-  const std::vector<double> mass = stiffness_scaled_masses(model, state.x);
+  std::vector<double> mass = stiffness_scaled_masses(model, state.x);
+  if (o.uniform_mass && !mass.empty())
+    mass.assign(mass.size(), *std::max_element(mass.begin(), mass.end()));
 
   // FIRE 2.0 parameters (dimensionless: masses are stiffnesses, so time is in units of 1/omega).
   constexpr double dt_max = 1.0, dt_min = 0.02, f_inc = 1.1, f_dec = 0.5;
@@ -105,6 +108,7 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
     }
     if (o.progress) o.progress({"", it, o.max_iterations, r.residual_relative, seconds()});
     if (r.residual_relative <= o.tolerance) break;
+    if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
   }
   if (r.iterations == 0) {
     const double res = max_free_force(model, f);

@@ -234,7 +234,7 @@ json with_step(const json& step) {
   json j = minimal();
   j["simulation"] = {{"solver", "static"}, {"G", 0}};
   j.erase("pins");
-  j["protocol"] = {step};
+  j["protocol"] = json::array({step});
   return j;
 }
 

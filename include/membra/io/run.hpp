@@ -14,6 +14,7 @@
 #include "membra/model/curvature_map.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/solve/solve_report.hpp"
+#include "membra/solve/stability.hpp"
 
 namespace membra {
 
@@ -67,6 +68,7 @@ struct RunResult {
   std::vector<StressFeature> features;              // the cuts and holes, in step order
   std::vector<StressConcentration> concentrations;  // stress at each feature, final state
   std::optional<CurvatureMapResult> curvature_map;  // scenes with a curvature_map step
+  StabilityReport stability;                        // of the final state
 };
 
 // Builds the membrane of a scene without running it (what `membra validate` checks). Throws

@@ -92,6 +92,7 @@ struct Scene {
   GridSpec grid;                      // SI
   SheetOptions sheet;                 // material in SI, K override in N/m
   std::string outline = "rectangle";  // or "disk": the ellipse inscribed in the rectangle
+  int benchmark_n = 0;  // > 0: the model is the benchmark problem P(n) (dimensionless, SI as is)
   std::vector<PinSpec> pins;
   SimulationSpec simulation;
   OutputSpec output;

@@ -20,6 +20,7 @@ struct DynamicsOptions {
   bool stop_when_converged = true;
   int check_every = 50;  // steps between residual and divergence checks
   int confirm_checks = 3;
+  double max_seconds = 0.0;                               // wall-time budget (0: none)
   std::function<void(const Progress&)> progress;          // called at every check
   std::function<void(const State&, long step)> on_check;  // e.g. to record animation frames
 };

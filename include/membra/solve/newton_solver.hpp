@@ -18,6 +18,7 @@ struct NewtonOptions {
   double tolerance = 1e-6;   // converged when max |static force| <= tolerance x force_scale
   double force_scale = 1.0;  // N
   long max_iterations = 500;
+  double max_seconds = 0.0;  // wall-time budget (0: none)
   std::function<void(const Progress&)> progress;
 };
 

@@ -1,0 +1,18 @@
+#pragma once
+// `membra bench`: the solvers side by side on P(n), as a table or JSON.
+#include <string>
+#include <vector>
+
+namespace membra::cli {
+
+struct BenchArgs {
+  std::vector<int> sizes{32, 64};
+  std::vector<std::string> solvers{"static", "dr_unit", "newton", "rk4"};
+  double budget = 60.0;
+  bool json = false;
+  bool quiet = false;
+};
+
+int cmd_bench(const BenchArgs& args);
+
+}  // namespace membra::cli

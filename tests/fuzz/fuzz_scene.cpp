@@ -1,0 +1,19 @@
+// libFuzzer target: any bytes as a scene file. A scene either parses or is refused with an
+// InputError; anything else (a crash, a sanitizer report, another exception) is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "membra/io/input_error.hpp"
+#include "membra/io/scene.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) return 0;
+  try {
+    (void)membra::parse_scene(j, "/nonexistent");
+  } catch (const membra::InputError&) {
+  }
+  return 0;
+}
