@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -26,7 +27,7 @@ int cmd_bench(const BenchArgs& args) {
       if (r.n == n && r.solver == solver) return &r;
     return nullptr;
   };
-  if (args.json) {
+  if (args.json || !args.json_out.empty()) {
     nlohmann::json j;
     j["membra_version"] = kVersion;
     j["threads"] = omp_get_max_threads();
@@ -49,8 +50,18 @@ int cmd_bench(const BenchArgs& args) {
           row[std::string("speedup_vs_") + b] = speedup(r, *br);
       j["runs"].push_back(row);
     }
-    std::cout << j.dump(2) << "\n";
-    return 0;
+    if (!args.json_out.empty()) {
+      std::ofstream out(args.json_out);
+      out << j.dump(2) << "\n";
+      if (!out) {
+        std::cerr << "membra: error: cannot write " << args.json_out << "\n";
+        return 4;
+      }
+    }
+    if (args.json) {
+      std::cout << j.dump(2) << "\n";
+      return 0;
+    }
   }
   std::printf("P(n), max|f| < %.0e, budget %.0f s per run, %d threads\n", o.tolerance, o.budget,
               omp_get_max_threads());

@@ -10,6 +10,7 @@ struct BenchArgs {
   std::vector<std::string> solvers{"static", "dr_unit", "newton", "rk4"};
   double budget = 60.0;
   bool json = false;
+  std::string json_out;  // also write the JSON here, with the table on stdout
   bool quiet = false;
 };
 

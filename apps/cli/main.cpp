@@ -118,6 +118,7 @@ int main(int argc, char** argv) {
   bench->add_option("--budget", bench_args.budget, "Wall-time budget per run, s")
       ->check(CLI::PositiveNumber);
   bench->add_flag("--json", bench_args.json, "Machine-readable output on stdout");
+  bench->add_option("--json-out", bench_args.json_out, "Also write the JSON to this file");
   bench->add_flag("--quiet,-q", bench_args.quiet, "No per-run log on stderr");
 
   try {
