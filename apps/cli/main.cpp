@@ -136,7 +136,13 @@ int main(int argc, char** argv) {
       return cmd_run(scene_file, sets, out_dir, quiet, run_opts);
     }
     if (*validate) return cmd_validate(scene_file, sets, quiet);
-    if (*bench) return membra::cli::cmd_bench(bench_args);
+    if (*bench) {
+      try {
+        return membra::cli::cmd_bench(bench_args);
+      } catch (const std::invalid_argument& e) {
+        throw membra::InputError("--solvers", e.what());
+      }
+    }
   } catch (const membra::InputError& e) {
     std::cerr << "membra: error: " << e.what() << "\n";
     return kBadInput;

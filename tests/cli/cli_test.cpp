@@ -203,3 +203,37 @@ TEST_F(Cli, DivergedRunWritesOnlyAFailureReport) {
 
 }  // namespace
 }  // namespace membra
+
+namespace membra {
+namespace {
+
+TEST(CliBench, RunsTheSolversSideBySideOnPn) {
+  const fs::path dir = unique_temp_dir();
+  fs::create_directories(dir);
+  const fs::path out = dir / "bench.json";
+  const Output o = membra_cli(
+      "bench --sizes 12 --solvers static,dr_unit,newton --budget 20 -q "
+      "--json-out " +
+      out.string());
+  ASSERT_EQ(o.code, 0) << o.text;
+  EXPECT_NE(o.text.find("dr_unit"), std::string::npos) << o.text;  // the table
+  std::ifstream in(out);
+  const json j = json::parse(in);
+  ASSERT_EQ(j["runs"].size(), 3u);
+  for (const auto& run : j["runs"]) {
+    EXPECT_EQ(run["n"], 12);
+    EXPECT_TRUE(run["converged"].get<bool>()) << run.dump();
+    EXPECT_LT(run["residual"].get<double>(), 1e-6);
+  }
+  // Stiffness-scaled masses beat one mass for all, measured side by side.
+  EXPECT_GT(j["runs"][0]["speedup_vs_dr_unit"].get<double>(), 1.0);
+  EXPECT_LT(j["runs"][0]["force_passes"].get<long>(), j["runs"][1]["force_passes"].get<long>());
+
+  fs::remove_all(dir);
+  const Output bad = membra_cli("bench --sizes 12 --solvers static,foo");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.text.find("unknown solver 'foo'"), std::string::npos) << bad.text;
+}
+
+}  // namespace
+}  // namespace membra
