@@ -158,7 +158,8 @@ PreparedScene prepare_scene(const Scene& scene) {
 }
 
 RunResult run_scene(const Scene& scene, const std::function<void(const Progress&)>& progress) {
-  RunResult r{prepare_scene(scene), {}, {}, 0.0, 0.0, 0.0, 0.0, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+  RunResult r;
+  r.prepared = prepare_scene(scene);
   FrameRecorder recorder{scene.output.frames, &r.frames};
   const double thickness = r.prepared.membrane.sheet.material.thickness;
   Membrane& mem = r.prepared.membrane;
