@@ -302,6 +302,23 @@ TEST(Scene, GrowAddSpringsAndCutErrorsNameTheField) {
   EXPECT_NE(failure(j).second.find("covers no particle"), std::string::npos);
 }
 
+TEST(Scene, CutsAndHolesCanComeAfterTheRelease) {
+  // A sheet stretched to 150 mm, released (back to 100 x 50 mm, now lying over x = 25..125 mm:
+  // it shrinks about its middle), then cut and holed where it now lies.
+  json j = with_step({{"step", "stretch"}, {"lambda", {1.5, 1.0}}});
+  j["protocol"].push_back({{"step", "release"}, {"increments", 2}});
+  j["protocol"].push_back({{"step", "cut"}, {"line", {{55, -5}, {55, 25}}}});
+  j["protocol"].push_back(
+      {{"step", "cut"}, {"hole", {{"circle", {{"center", {95, 25}}, {"radius", 6}}}}}});
+  const RunResult r = run_scene(parse_scene(j));
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  ASSERT_EQ(r.steps.size(), 4u);
+  EXPECT_GT(r.steps[2].springs_cut, 0);
+  EXPECT_GT(r.steps[3].particles_removed, 0);
+  EXPECT_EQ(r.concentrations.size(), 2u);
+  EXPECT_EQ(r.prepared.membrane.sheet.model.num_particles(), 11 * 6 - r.steps[3].particles_removed);
+}
+
 TEST(Scene, PatternCoveringNoSpringIsReportedWhenRun) {
   // A 1 mm dot between grid nodes (spacing 10 mm x 1.5): inside the frame, but touches nothing.
   json j = with_protocol({{"ellipse", {{"center", {7.5, 5}}, {"radii", {0.5, 0.5}}}}});
