@@ -4,7 +4,6 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/glcorearb.h>
-#include <stb_easy_font.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -12,56 +11,9 @@
 #include <cstdio>
 #include <numbers>
 
+#include "membra/geometry/orbit_camera.hpp"
+
 namespace membra {
-namespace {
-
-const char* kVertexShader = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec3 normal;
-layout(location = 2) in vec3 color;
-uniform mat4 view_projection;
-uniform mat3 view_rotation;
-uniform int lit;
-out vec3 shade;
-void main() {
-  gl_Position = view_projection * vec4(position, 1.0);
-  if (lit == 1) {
-    // Two-sided Lambert light from the viewer's upper left, plus ambient.
-    vec3 n = normalize(view_rotation * normal);
-    float d = abs(dot(n, normalize(vec3(-0.3, 0.4, 1.0))));
-    shade = color * (0.35 + 0.65 * d);
-  } else {
-    shade = color;
-  }
-}
-)";
-
-const char* kFragmentShader = R"(#version 330 core
-in vec3 shade;
-out vec4 out_color;
-void main() { out_color = vec4(shade, 1.0); }
-)";
-
-GLuint compile(GLenum type, const char* src) {
-  const GLuint s = glCreateShader(type);
-  glShaderSource(s, 1, &src, nullptr);
-  glCompileShader(s);
-  GLint ok = 0;
-  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[1024];
-    glGetShaderInfoLog(s, sizeof log, nullptr, log);
-    throw RenderError(std::string("shader compilation failed: ") + log);
-  }
-  return s;
-}
-
-// Interleaved vertex: position, normal, colour.
-struct Vertex {
-  float p[3], n[3], c[3];
-};
-
-}  // namespace
 
 Rgb Image::pixel(int px, int py) const {
   const size_t i = (static_cast<size_t>(py) * width + px) * 3;
@@ -72,23 +24,8 @@ struct Renderer::Impl {
   int width, height;
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
-  GLuint fbo = 0, color_rb = 0, depth_rb = 0, program = 0, vao = 0, vbo = 0;
-
-  void draw(const std::vector<Vertex>& v, GLenum mode, const float* vp, const float* rot, int lit) {
-    glBindVertexArray(vao);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(Vertex)), v.data(),
-                 GL_STREAM_DRAW);
-    for (GLuint a = 0; a < 3; ++a) {
-      glEnableVertexAttribArray(a);
-      glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                            reinterpret_cast<void*>(static_cast<uintptr_t>(a * 3 * sizeof(float))));
-    }
-    glUniformMatrix4fv(glGetUniformLocation(program, "view_projection"), 1, GL_FALSE, vp);
-    glUniformMatrix3fv(glGetUniformLocation(program, "view_rotation"), 1, GL_FALSE, rot);
-    glUniform1i(glGetUniformLocation(program, "lit"), lit);
-    glDrawArrays(mode, 0, static_cast<GLsizei>(v.size()));
-  }
+  GLuint fbo = 0, color_rb = 0, depth_rb = 0;
+  std::unique_ptr<GlPainter> painter;
 };
 
 Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
@@ -135,19 +72,13 @@ Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw RenderError("incomplete framebuffer");
 
-  r.program = glCreateProgram();
-  glAttachShader(r.program, compile(GL_VERTEX_SHADER, kVertexShader));
-  glAttachShader(r.program, compile(GL_FRAGMENT_SHADER, kFragmentShader));
-  glLinkProgram(r.program);
-  GLint ok = 0;
-  glGetProgramiv(r.program, GL_LINK_STATUS, &ok);
-  if (!ok) throw RenderError("shader program failed to link");
-  glGenVertexArrays(1, &r.vao);
-  glGenBuffers(1, &r.vbo);
+  r.painter = std::make_unique<GlPainter>();
 }
 
 Renderer::~Renderer() {
   if (!impl_ || impl_->display == EGL_NO_DISPLAY) return;
+  eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context);
+  impl_->painter.reset();  // its GL names belong to the context
   eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   if (impl_->context != EGL_NO_CONTEXT) eglDestroyContext(impl_->display, impl_->context);
   eglTerminate(impl_->display);
@@ -161,113 +92,31 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
   glViewport(0, 0, r.width, r.height);
   glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glUseProgram(r.program);
 
   // Orthographic camera fitted to the bounding sphere; the mesh takes the left part of the image
   // when a legend is drawn.
-  const double az = cam.azimuth * std::numbers::pi / 180,
-               el = cam.elevation * std::numbers::pi / 180;
-  const Vec3 eye(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
-  const Vec3 fwd = -eye;
-  Vec3 right = fwd.cross(Vec3::UnitZ());
-  if (right.norm() < 1e-9) right = Vec3::UnitX();
-  right.normalize();
-  const Vec3 up = right.cross(fwd);
-  Eigen::Matrix3d rot;
-  rot.row(0) = right;
-  rot.row(1) = up;
-  rot.row(2) = -fwd;
   const Vec3 centre =
       x.cols() ? Vec3(0.5 * (x.rowwise().minCoeff() + x.rowwise().maxCoeff())) : Vec3::Zero();
   double radius = 1e-12;
   for (Eigen::Index p = 0; p < x.cols(); ++p) radius = std::max(radius, (x.col(p) - centre).norm());
   const double mesh_w = legend ? 0.8 : 1.0;  // share of the width for the mesh
   const double aspect = mesh_w * r.width / r.height;
-  const double sy = 1.0 / (radius * cam.margin * std::max(1.0, 1.0 / aspect));
-  const double sx = sy / aspect;
-  Eigen::Matrix4f vp = Eigen::Matrix4f::Identity();
-  Eigen::Matrix3d s =
-      Eigen::Vector3d(sx * mesh_w, sy, -0.5 / (radius * cam.margin)).asDiagonal() * rot;
-  vp.topLeftCorner<3, 3>() = s.cast<float>();
-  vp.topRightCorner<3, 1>() =
-      (-(s * centre) + Vec3(legend ? -(1.0 - mesh_w) : 0.0, 0.0, 0.0)).cast<float>();
-  const Eigen::Matrix3f rotf = rot.cast<float>();
+  OrbitCamera orbit;
+  orbit.azimuth = cam.azimuth;
+  orbit.elevation = cam.elevation;
+  orbit.fit(centre, radius, cam.margin * std::max(1.0, 1.0 / aspect));
+  orbit.depth = 2.0 * radius * cam.margin;
+  // Squeeze into the left mesh_w of the image.
+  Eigen::Matrix4d squeeze = Eigen::Matrix4d::Identity();
+  squeeze(0, 0) = mesh_w;
+  squeeze(0, 3) = -(1.0 - mesh_w);
+  const Eigen::Matrix4f vp = (squeeze * orbit.view_projection(aspect)).cast<float>();
+  const Eigen::Matrix3f rotf = orbit.rotation().cast<float>();
 
-  // Smooth normals (area-weighted).
-  Points normals = Points::Zero(3, x.cols());
-  for (const Triangle& t : tris) {
-    const Vec3 n = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
-    for (int k = 0; k < 3; ++k) normals.col(t[k]) += n;
-  }
-  std::vector<Vertex> verts;
-  verts.reserve(tris.size() * 3);
-  for (const Triangle& t : tris)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 p = x.col(t[k]), n = normals.col(t[k]).normalized();
-      const Rgb& c = colors[t[k]];
-      verts.push_back({{float(p.x()), float(p.y()), float(p.z())},
-                       {float(n.x()), float(n.y()), float(n.z())},
-                       {c.x(), c.y(), c.z()}});
-    }
   glEnable(GL_DEPTH_TEST);
-  r.draw(verts, GL_TRIANGLES, vp.data(), rotf.data(), 1);
+  r.painter->mesh(x, tris, colors, vp, rotf);
   glDisable(GL_DEPTH_TEST);
-
-  if (legend) {
-    // Pixel coordinates (origin top-left) to clip space.
-    const float w = static_cast<float>(r.width), h = static_cast<float>(r.height);
-    const Eigen::Matrix4f px = [&] {
-      Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
-      m(0, 0) = 2.0f / w;
-      m(1, 1) = -2.0f / h;
-      m(0, 3) = -1.0f;
-      m(1, 3) = 1.0f;
-      return m;
-    }();
-    const Eigen::Matrix3f id = Eigen::Matrix3f::Identity();
-    std::vector<Vertex> bar;
-    const float x0 = 0.84f * w, x1 = x0 + 0.03f * w;
-    const float top = 0.15f * h, bottom = 0.85f * h;
-    constexpr int steps = 64;
-    for (int i = 0; i < steps; ++i) {
-      const float fa = static_cast<float>(i) / steps, fb = static_cast<float>(i + 1) / steps;
-      const float ya = bottom - (bottom - top) * fa, yb = bottom - (bottom - top) * fb;
-      const Rgb ca = colormap(legend->lo + (legend->hi - legend->lo) * fa, legend->lo, legend->hi);
-      const Rgb cb = colormap(legend->lo + (legend->hi - legend->lo) * fb, legend->lo, legend->hi);
-      auto v = [](float a, float b, const Rgb& c) {
-        return Vertex{{a, b, 0.0f}, {0, 0, 1}, {c.x(), c.y(), c.z()}};
-      };
-      bar.insert(bar.end(), {v(x0, ya, ca), v(x1, ya, ca), v(x1, yb, cb), v(x0, ya, ca),
-                             v(x1, yb, cb), v(x0, yb, cb)});
-    }
-    r.draw(bar, GL_TRIANGLES, px.data(), id.data(), 0);
-
-    // Labels with stb_easy_font (quads in pixels at scale 1; drawn at 2x).
-    std::vector<Vertex> text;
-    auto label = [&](const std::string& str, float lx, float ly) {
-      static char buffer[60000];
-      const int quads =
-          stb_easy_font_print(0, 0, const_cast<char*>(str.c_str()), nullptr, buffer, sizeof buffer);
-      const float* q = reinterpret_cast<const float*>(buffer);
-      for (int i = 0; i < quads; ++i) {
-        Vertex c[4];
-        for (int k = 0; k < 4; ++k) {
-          const float* e = q + (i * 4 + k) * 4;  // x, y, z, packed colour
-          c[k] = {{lx + 2.0f * e[0], ly + 2.0f * e[1], 0.0f}, {0, 0, 1}, {0.1f, 0.1f, 0.1f}};
-        }
-        text.insert(text.end(), {c[0], c[1], c[2], c[0], c[2], c[3]});
-      }
-    };
-    char buf[64];
-    for (int i = 0; i <= 4; ++i) {
-      const double v = legend->lo + (legend->hi - legend->lo) * i / 4.0;
-      std::snprintf(buf, sizeof buf, "%.3g", v);
-      label(buf, x1 + 6.0f, bottom - (bottom - top) * static_cast<float>(i) / 4.0f - 7.0f);
-    }
-    label(legend->title, 0.62f * w, 0.04f * h);
-    label(legend->unit, x0 - 6.0f, top - 26.0f);
-    r.draw(text, GL_TRIANGLES, px.data(), id.data(), 0);
-  }
+  if (legend) r.painter->legend(*legend, r.width, r.height);
 
   Image img{r.width, r.height,
             std::vector<std::uint8_t>(static_cast<size_t>(r.width) * r.height * 3)};

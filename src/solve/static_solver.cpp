@@ -36,27 +36,43 @@ std::vector<double> stiffness_scaled_masses(const Model& model, const Points& x)
   return m;
 }
 
-SolveReport solve_static(const Model& model, State& state, const StaticOptions& o) {
+StaticRelaxation::StaticRelaxation(const Model& model, const Points& x, const StaticOptions& o)
+    : options_(o) {
+  reset(model, x);
+}
+
+void StaticRelaxation::reset(const Model& model, const Points& x) {
+  mass_ = stiffness_scaled_masses(model, x);
+  if (options_.uniform_mass && !mass_.empty())
+    mass_.assign(mass_.size(), *std::max_element(mass_.begin(), mass_.end()));
+  v_ = Points::Zero(3, model.num_particles());
+  dt_ = 0.1;
+  alpha_ = kAlphaStart;
+  n_positive_ = 0;
+  iterations_ = 0;
+  size0_ = std::max(sheet_extent(x), 1e-12);
+}
+
+SolveReport StaticRelaxation::advance(const Model& model, State& state, long iterations) {
   const Stopwatch clock;
   auto seconds = [&] { return clock.seconds(); };
+  const StaticOptions& o = options_;
   const int n = model.num_particles();
-  std::vector<double> mass = stiffness_scaled_masses(model, state.x);
-  if (o.uniform_mass && !mass.empty())
-    mass.assign(mass.size(), *std::max_element(mass.begin(), mass.end()));
+  if (v_.cols() != n || static_cast<int>(mass_.size()) != n) reset(model, state.x);
 
   // FIRE 2.0 parameters (dimensionless: masses are stiffnesses, so time is in units of 1/omega).
   constexpr double dt_max = 1.0, dt_min = 0.02, f_inc = 1.1, f_dec = 0.5;
-  constexpr double alpha_start = 0.25, f_alpha = 0.99;
+  constexpr double f_alpha = 0.99;
   constexpr int n_delay = 20;
-  double dt = 0.1, alpha = alpha_start;
-  int n_positive = 0;
 
   Points& x = state.x;
-  const double size0 = std::max(sheet_extent(x), 1e-12);
-  Points v = Points::Zero(3, n), f;
+  Points& v = v_;
+  const std::vector<double>& mass = mass_;
+  Points f;
   SolveReport r;
   compute_static_forces(model, x, f);
-  for (long it = 1; it <= o.max_iterations; ++it) {
+  for (long k = 1; k <= iterations; ++k) {
+    const long it = ++iterations_;
     // Power of the forces on the current velocities decides: speed up, or stop and back off.
     double power = 0.0, v_norm2 = 0.0, g_norm2 = 0.0;
     for (int p = 0; p < n; ++p) {
@@ -66,35 +82,35 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
       g_norm2 += f.col(p).squaredNorm() / mass[p];
     }
     if (power > 0.0) {
-      if (++n_positive > n_delay) {
-        dt = std::min(dt * f_inc, dt_max);
-        alpha *= f_alpha;
+      if (++n_positive_ > n_delay) {
+        dt_ = std::min(dt_ * f_inc, dt_max);
+        alpha_ *= f_alpha;
       }
     } else {
-      n_positive = 0;
-      if (it > n_delay) dt = std::max(dt * f_dec, dt_min);
-      alpha = alpha_start;
-      x -= 0.5 * dt * v;  // undo half of the overshooting step
+      n_positive_ = 0;
+      if (it > n_delay) dt_ = std::max(dt_ * f_dec, dt_min);
+      alpha_ = kAlphaStart;
+      x -= 0.5 * dt_ * v;  // undo half of the overshooting step
       v.setZero();
     }
     // Semi-implicit Euler on the scaled masses, with FIRE's steering of v towards the force
     // (done in the mass-weighted metric, where the scaled system is isotropic).
-    const double mix = g_norm2 > 0.0 ? alpha * std::sqrt(v_norm2 / g_norm2) : 0.0;
+    const double mix = g_norm2 > 0.0 ? alpha_ * std::sqrt(v_norm2 / g_norm2) : 0.0;
     for (int p = 0; p < n; ++p) {
       if (model.pinned(p)) continue;
       const Vec3 a = f.col(p) / mass[p];
-      v.col(p) = (1.0 - alpha) * (v.col(p) + dt * a) + mix * a;
-      x.col(p) += dt * v.col(p);
+      v.col(p) = (1.0 - alpha_) * (v.col(p) + dt_ * a) + mix * a;
+      x.col(p) += dt_ * v.col(p);
     }
     compute_static_forces(model, x, f);
     ++r.iterations;
     ++r.force_passes;
-    if (it % o.check_every != 0 && it != o.max_iterations) continue;
+    if (k % o.check_every != 0 && k != iterations) continue;
 
     const double res = max_free_force(model, f);
     r.residual = res;
     r.residual_relative = res / o.force_scale;
-    if (!std::isfinite(res) || !x.allFinite() || sheet_extent(x) > 100.0 * size0) {
+    if (!std::isfinite(res) || !x.allFinite() || sheet_extent(x) > 100.0 * size0_) {
       r.diverged = true;
       std::ostringstream msg;
       msg << "static solver diverged at iteration " << it << ": "
@@ -106,7 +122,7 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
       r.wall_seconds = seconds();
       return r;
     }
-    if (o.progress) o.progress({"", it, o.max_iterations, r.residual_relative, seconds()});
+    if (o.progress) o.progress({"", k, iterations, r.residual_relative, seconds()});
     if (r.residual_relative <= o.tolerance) break;
     if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
   }
@@ -116,9 +132,15 @@ SolveReport solve_static(const Model& model, State& state, const StaticOptions& 
     r.residual_relative = res / o.force_scale;
   }
   r.converged = r.residual_relative <= o.tolerance;
-  state.v.setZero(3, n);
   r.wall_seconds = seconds();
   r.message = summary_message("static", r, o.tolerance);
+  return r;
+}
+
+SolveReport solve_static(const Model& model, State& state, const StaticOptions& o) {
+  StaticRelaxation relaxation(model, state.x, o);
+  SolveReport r = relaxation.advance(model, state, o.max_iterations);
+  state.v.setZero(3, model.num_particles());
   return r;
 }
 

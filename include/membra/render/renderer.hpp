@@ -13,6 +13,7 @@
 #include "membra/geometry/vec.hpp"
 #include "membra/measure/colormap.hpp"
 #include "membra/model/pattern.hpp"
+#include "membra/render/gl_painter.hpp"
 
 namespace membra {
 
@@ -26,13 +27,6 @@ struct Camera {
   double azimuth = -60.0;
   double elevation = 35.0;
   double margin = 1.1;  // the bounding sphere fills 1/margin of the shorter image side
-};
-
-// A colour bar: the map's range and what it shows.
-struct Legend {
-  std::string title;  // e.g. "Gaussian curvature"
-  std::string unit;   // e.g. "1/mm^2"
-  double lo = 0.0, hi = 1.0;
 };
 
 // An RGB image, rows from the top.

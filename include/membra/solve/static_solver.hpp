@@ -20,6 +20,29 @@ struct StaticOptions {
   std::function<void(const Progress&)> progress;
 };
 
+// FIRE relaxation that can be carried on in slices (the viewer advances it a little every frame),
+// keeping its velocities, step and mixing between calls.
+class StaticRelaxation {
+ public:
+  StaticRelaxation(const Model& model, const Points& x, const StaticOptions& options);
+  // Starts afresh (masses from x, velocities zero): call it after the model changed.
+  void reset(const Model& model, const Points& x);
+  // At most `iterations` more iterations (fewer when converged, diverged or out of
+  // options.max_seconds); the report covers this call only. Velocities stay in the relaxation.
+  SolveReport advance(const Model& model, State& state, long iterations);
+  // Iterations since the last reset.
+  long iterations() const { return iterations_; }
+
+ private:
+  static constexpr double kAlphaStart = 0.25;
+  StaticOptions options_;
+  std::vector<double> mass_;
+  Points v_;
+  double dt_ = 0.1, alpha_ = kAlphaStart, size0_ = 1.0;
+  int n_positive_ = 0;
+  long iterations_ = 0;
+};
+
 // Moves the free particles of `state` to a nearby equilibrium (velocities are left zero).
 // Never throws on divergence: the report says so.
 SolveReport solve_static(const Model& model, State& state, const StaticOptions& options);
