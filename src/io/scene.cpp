@@ -472,6 +472,7 @@ void parse_output(const JsonObject& top, OutputSpec& out) {
 
 Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   Scene scene;
+  scene.source = j;
   const JsonObject top(j, "", kTopKeys);
   scene.name = top.string("name", "untitled");
   scene.description = top.string("description", "");

@@ -97,6 +97,7 @@ struct Scene {
   SimulationSpec simulation;
   OutputSpec output;
   std::vector<ProtocolStep> protocol;  // empty: one solve of the sheet as built
+  nlohmann::json source;               // the JSON it was parsed from (after overrides)
 };
 
 // Parses and validates a scene; files it names (images) are relative to base_dir. Throws

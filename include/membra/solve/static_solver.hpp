@@ -30,6 +30,8 @@ class StaticRelaxation {
   // At most `iterations` more iterations (fewer when converged, diverged or out of
   // options.max_seconds); the report covers this call only. Velocities stay in the relaxation.
   SolveReport advance(const Model& model, State& state, long iterations);
+  // The options it runs with (a caller may change the budget between calls).
+  StaticOptions& options() { return options_; }
   // Iterations since the last reset.
   long iterations() const { return iterations_; }
 

@@ -1,0 +1,534 @@
+#include "membra/view/viewer_session.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "membra/model/cut.hpp"
+#include "membra/model/pins.hpp"
+#include "membra/model/units.hpp"
+#include "membra/solve/dynamics.hpp"
+
+namespace membra {
+namespace {
+
+constexpr size_t kMaxUndo = 40;  // snapshots kept (a 64 x 64 membrane is about 2 MB each)
+
+nlohmann::json mm(const Vec2& p) {
+  return {p.x() / units::mm, p.y() / units::mm};
+}
+
+nlohmann::json circle_json(const Vec2& centre, double radius) {
+  return {{"circle", {{"center", mm(centre)}, {"radius", radius / units::mm}}}};
+}
+
+StaticOptions relax_options(const Scene& scene, double force_scale) {
+  StaticOptions o;
+  o.tolerance = scene.simulation.tolerance;
+  o.force_scale = force_scale;
+  return o;
+}
+
+}  // namespace
+
+const char* stage_name(Stage stage) {
+  switch (stage) {
+    case Stage::flat:
+      return "flat";
+    case Stage::stretched:
+      return "stretched";
+    case Stage::impregnated:
+      return "impregnated";
+    case Stage::released:
+      return "released";
+  }
+  return "?";
+}
+
+ViewerSession::ViewerSession(Scene scene)
+    : scene_(std::move(scene)),
+      prepared_(prepare_scene(scene_)),
+      relaxation_(prepared_.membrane.sheet.model, prepared_.membrane.state.x,
+                  relax_options(scene_, prepared_.force_scale)) {
+  params_.K = prepared_.membrane.sheet.stiffness.stretch;
+  params_.G = scene_.simulation.gravity;
+  params_.T = scene_.simulation.dt;
+  params_.D = scene_.simulation.damping;
+  if (const ProtocolStep* s = first_step(ProtocolStep::Kind::stretch)) params_.lambda = s->lambda;
+  if (!scene_.simulation.is_static()) mode_ = LiveMode::dynamics;
+  if (const ProtocolStep* s = first_step(ProtocolStep::Kind::impregnate)) {
+    const size_t i = static_cast<size_t>(s - scene_.protocol.data());
+    material_name_ = scene_.source["protocol"][i].value("material", "epoxy");
+  }
+}
+
+const ProtocolStep* ViewerSession::first_step(ProtocolStep::Kind kind) const {
+  for (const ProtocolStep& s : scene_.protocol)
+    if (s.kind == kind) return &s;
+  return nullptr;
+}
+
+PatternPtr ViewerSession::resin_pattern() const {
+  PatternPtr p = scene_pattern_used_ ? nullptr : scene_pattern(scene_);
+  for (const Stroke& s : strokes_) {
+    const PatternPtr disc = make_ellipse(s.centre, s.radius, s.radius, 0.0);
+    if (s.erase) {
+      if (p) p = make_difference({p, disc});
+    } else {
+      p = p ? make_union({p, disc}) : disc;
+    }
+  }
+  return p;
+}
+
+nlohmann::json ViewerSession::resin_pattern_json() const {
+  nlohmann::json p;  // null: nothing yet
+  if (!scene_pattern_used_) {
+    nlohmann::json parts = nlohmann::json::array();
+    for (const ProtocolStep& s : scene_.protocol)
+      if (s.kind == ProtocolStep::Kind::impregnate) parts.push_back(s.pattern_json);
+    if (parts.size() == 1) p = parts[0];
+    if (parts.size() > 1) p = {{"union", parts}};
+  }
+  for (const Stroke& s : strokes_) {
+    const nlohmann::json disc = circle_json(s.centre, s.radius);
+    if (s.erase) {
+      if (!p.is_null()) p = {{"difference", {p, disc}}};
+    } else if (p.is_null()) {
+      p = disc;
+    } else if (p.contains("union")) {
+      p["union"].push_back(disc);  // consecutive strokes stay one flat union
+    } else {
+      p = {{"union", {p, disc}}};
+    }
+  }
+  return p;
+}
+
+ViewerSession::Snapshot ViewerSession::snapshot() const {
+  return {prepared_.membrane,  stage_,       strokes_,           log_, release_step_,
+          release_increments_, viewer_pins_, scene_pattern_used_};
+}
+
+void ViewerSession::restore(const Snapshot& s) {
+  prepared_.membrane = s.membrane;
+  stage_ = s.stage;
+  strokes_ = s.strokes;
+  log_ = s.log;
+  release_step_ = s.release_step;
+  release_increments_ = s.release_increments;
+  viewer_pins_ = s.viewer_pins;
+  scene_pattern_used_ = s.scene_pattern_used;
+  queue_.clear();
+  model_changed();
+}
+
+void ViewerSession::push_undo() {
+  if (editing_ && edit_snapshot_taken_) return;
+  if (editing_) edit_snapshot_taken_ = true;
+  undo_.push_back(snapshot());
+  if (undo_.size() > kMaxUndo) undo_.pop_front();
+  redo_.clear();
+}
+
+void ViewerSession::begin_edit() {
+  editing_ = true;
+  edit_snapshot_taken_ = false;
+}
+
+void ViewerSession::end_edit() {
+  editing_ = false;
+}
+
+bool ViewerSession::undo() {
+  if (undo_.empty()) return false;
+  redo_.push_back(snapshot());
+  restore(undo_.back());
+  undo_.pop_back();
+  return true;
+}
+
+bool ViewerSession::redo() {
+  if (redo_.empty()) return false;
+  undo_.push_back(snapshot());
+  restore(redo_.back());
+  redo_.pop_back();
+  return true;
+}
+
+void ViewerSession::model_changed() {
+  relaxation_ = StaticRelaxation(prepared_.membrane.sheet.model, prepared_.membrane.state.x,
+                                 relax_options(scene_, prepared_.force_scale));
+  prepared_.membrane.state.v.setZero(3, prepared_.membrane.sheet.model.num_particles());
+  settled_ = false;
+}
+
+std::string ViewerSession::stretch() {
+  if (stage_ != Stage::flat) return "the sheet is already stretched (reset or undo first)";
+  const Vec2 l = params_.lambda;
+  if (!(l.x() > 0.0 && l.y() > 0.0 && l.x() <= 10.0 && l.y() <= 10.0))
+    return "the stretch ratios must be within (0, 10]";
+  push_undo();
+  FrameEdges hold;
+  nlohmann::json step = {{"step", "stretch"}, {"lambda", {l.x(), l.y()}}};
+  if (const ProtocolStep* s = first_step(ProtocolStep::Kind::stretch)) {
+    hold = s->hold;
+    nlohmann::json edges = nlohmann::json::array();
+    for (auto [on, name] : {std::pair{hold.left, "left"}, std::pair{hold.right, "right"},
+                            std::pair{hold.bottom, "bottom"}, std::pair{hold.top, "top"}})
+      if (on) edges.push_back(name);
+    if (edges.size() < 4) step["hold"] = edges;
+  }
+  stretch_frame(prepared_.membrane, l.x(), l.y(), hold);
+  log_.push_back(step);
+  stage_ = Stage::stretched;
+  model_changed();
+  return "";
+}
+
+std::string ViewerSession::impregnate_with(const PatternPtr& pattern, const nlohmann::json& json) {
+  const ProtocolStep* s = first_step(ProtocolStep::Kind::impregnate);
+  const Material resin = s ? s->resin : epoxy();
+  const int side = s ? s->resin_side : +1;
+  push_undo();
+  const int n = membra::impregnate(prepared_.membrane, *pattern, resin, side);
+  if (n == 0) {
+    restore(undo_.back());
+    undo_.pop_back();
+    return "the resin pattern covers no spring of the sheet";
+  }
+  log_.push_back({{"step", "impregnate"},
+                  {"pattern", json},
+                  {"material", material_name_},
+                  {"resin_side", side > 0 ? "top" : "bottom"}});
+  stage_ = Stage::impregnated;
+  model_changed();
+  return "";
+}
+
+std::string ViewerSession::impregnate() {
+  if (stage_ == Stage::flat) return "stretch the sheet before impregnating it";
+  if (stage_ == Stage::released) return "the sheet is released: resin goes on the stretched sheet";
+  const PatternPtr pattern = resin_pattern();
+  if (!pattern) return "there is no resin to apply: paint some first";
+  const nlohmann::json json = resin_pattern_json();
+  const std::string why = impregnate_with(pattern, json);
+  if (!why.empty()) return why;
+  // What was applied is used up; the next strokes start a new pattern.
+  strokes_.clear();
+  scene_pattern_used_ = true;
+  return "";
+}
+
+std::string ViewerSession::release() {
+  if (stage_ == Stage::flat) return "stretch the sheet before releasing it";
+  if (stage_ == Stage::released) return "the sheet is already released";
+  push_undo();
+  const ProtocolStep* s = first_step(ProtocolStep::Kind::release);
+  const ProtocolStep defaults;
+  const ProtocolStep& r = s ? *s : defaults;
+  Membrane& m = prepared_.membrane;
+  perturb(m, r.perturbation, r.seed);
+  begin_release(m);
+  release_increments_ = r.increments;
+  release_step_ = 0;
+  if (mode_ == LiveMode::dynamics) {
+    // Time stepping lets go at once, as `membra run` does with an integrator.
+    set_release_level(m, 0.0);
+    release_step_ = release_increments_;
+  }
+  log_.push_back({{"step", "release"},
+                  {"increments", r.increments},
+                  {"perturbation", r.perturbation / units::mm},
+                  {"seed", r.seed}});
+  stage_ = Stage::released;
+  model_changed();
+  return "";
+}
+
+std::string ViewerSession::paint(const Vec2& centre, double radius, bool erase) {
+  if (!(radius > 0.0) || !centre.allFinite()) return "the brush needs a positive radius";
+  if (stage_ == Stage::released || stage_ == Stage::impregnated)
+    return "paint resin on the sheet before impregnating it (undo or reset to go back)";
+  push_undo();
+  strokes_.push_back({centre, radius, erase});
+  return "";
+}
+
+std::string ViewerSession::cut(const Vec2& a, const Vec2& b) {
+  if (!a.allFinite() || !b.allFinite() || (a - b).norm() == 0.0) return "the cut needs two points";
+  push_undo();
+  const int n = cut_along(prepared_.membrane, {a, b});
+  if (n == 0) {
+    undo_.pop_back();
+    return "the cut crosses no spring of the sheet";
+  }
+  log_.push_back({{"step", "cut"}, {"line", {mm(a), mm(b)}}});
+  model_changed();
+  return "";
+}
+
+std::string ViewerSession::hole(const Vec2& centre, double radius) {
+  if (!(radius > 0.0) || !centre.allFinite()) return "the hole needs a positive radius";
+  push_undo();
+  try {
+    const int n = punch_hole(prepared_.membrane, *make_ellipse(centre, radius, radius, 0.0));
+    if (n == 0) {
+      undo_.pop_back();
+      return "the hole covers no particle of the sheet";
+    }
+  } catch (const std::invalid_argument& e) {
+    restore(undo_.back());
+    undo_.pop_back();
+    return e.what();
+  }
+  log_.push_back({{"step", "cut"}, {"hole", circle_json(centre, radius)}});
+  model_changed();
+  return "";
+}
+
+int ViewerSession::nearest_particle(const Vec2& at) const {
+  const Points& x = prepared_.membrane.state.x;
+  int best = -1;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (Eigen::Index p = 0; p < x.cols(); ++p) {
+    const double d = (x.col(p).head<2>() - at).squaredNorm();
+    if (d < best_d) best_d = d, best = static_cast<int>(p);
+  }
+  return best;
+}
+
+std::string ViewerSession::toggle_pin(const Vec2& at) {
+  const int p = nearest_particle(at);
+  if (p < 0) return "the sheet has no particle";
+  Membrane& m = prepared_.membrane;
+  const Vec2 paper = m.sheet.model.reference.col(p).head<2>();
+  const nlohmann::json pin = {{"point", mm(paper)}};
+  const auto mine = std::find_if(viewer_pins_.begin(), viewer_pins_.end(),
+                                 [&](const Vec2& q) { return (q - paper).norm() < 1e-12; });
+  if (m.sheet.model.pinned(p) && mine == viewer_pins_.end())
+    return "this particle is held by the scene's pins or the frame";
+  push_undo();
+  if (mine != viewer_pins_.end()) {
+    m.sheet.model.unpin(p);
+    viewer_pins_.erase(mine);
+    // Its pin leaves the log again, so the saved scene does not pin it.
+    for (auto it = log_.begin(); it != log_.end(); ++it)
+      if ((*it)["step"] == "load" && it->contains("pins") && (*it)["pins"].size() == 1 &&
+          (*it)["pins"][0] == pin) {
+        log_.erase(it);
+        break;
+      }
+  } else {
+    m.sheet.model.pin(p);
+    m.state.v.col(p).setZero();
+    viewer_pins_.push_back(paper);
+    log_.push_back({{"step", "load"}, {"pins", {pin}}});
+  }
+  model_changed();
+  return "";
+}
+
+void ViewerSession::reset() {
+  push_undo();
+  prepared_ = prepare_scene(scene_);
+  stage_ = Stage::flat;
+  strokes_.clear();
+  log_ = nlohmann::json::array();
+  viewer_pins_.clear();
+  release_step_ = release_increments_ = 0;
+  scene_pattern_used_ = false;
+  queue_.clear();
+  // The live parameters stay as the user set them.
+  const LiveParameters p = params_;
+  params_.K = prepared_.membrane.sheet.stiffness.stretch;
+  set_parameters(p);
+  model_changed();
+}
+
+std::string ViewerSession::set_parameters(const LiveParameters& p) {
+  if (!(p.K > 0.0) || !std::isfinite(p.K)) return "K must be positive";
+  if (!std::isfinite(p.G)) return "G must be a number";
+  if (!(p.T > 0.0) || !std::isfinite(p.T)) return "T must be positive";
+  if (!(p.D >= 0.0) || !std::isfinite(p.D)) return "D must be zero or positive";
+  if (!(p.lambda.x() > 0.0 && p.lambda.y() > 0.0 && p.lambda.maxCoeff() <= 10.0))
+    return "the stretch ratios must be within (0, 10]";
+  Membrane& m = prepared_.membrane;
+  Model& model = m.sheet.model;
+  bool changed = false;
+  if (p.K != params_.K) {
+    // Every latex spring keeps its ratio to K (shear K/2, flex, added); the resin does not change.
+    const double ratio = p.K / params_.K;
+    for (double& k : m.latex_stiffness) k *= ratio;
+    m.sheet.stiffness.stretch *= ratio;
+    m.sheet.stiffness.shear *= ratio;
+    m.sheet.stiffness.flex *= ratio;
+    for (int s = 0; s < model.springs.size(); ++s) update_spring(m, s);
+    prepared_.force_scale *= ratio;
+    changed = true;
+  }
+  if (p.G != params_.G || p.D != params_.D) changed = true;
+  model.gravity = Vec3(0.0, 0.0, -p.G);
+  model.velocity_damping = p.D;
+  params_ = p;
+  if (changed) model_changed();
+  return "";
+}
+
+void ViewerSession::set_mode(LiveMode mode) {
+  if (mode == mode_) return;
+  mode_ = mode;
+  model_changed();
+}
+
+SliceReport ViewerSession::advance(long max_iterations, double max_seconds) {
+  last_slice_ = advance_slice(max_iterations, max_seconds);
+  return last_slice_;
+}
+
+SliceReport ViewerSession::advance_slice(long max_iterations, double max_seconds) {
+  SliceReport rep;
+  Membrane& m = prepared_.membrane;
+  const Model& model = m.sheet.model;
+  if (settled_ && !queue_.empty()) {
+    const ProtocolStep* step = queue_.front();
+    queue_.pop_front();
+    rep.message = apply_scene_step(*step);
+  }
+  if (settled_) {
+    rep.settled = true;
+    return rep;
+  }
+  const Points before = m.state.x;
+  SolveReport r;
+  if (mode_ == LiveMode::relax) {
+    StaticOptions& o = relaxation_.options();
+    o.max_seconds = max_seconds;
+    r = relaxation_.advance(model, m.state, max_iterations);
+  } else {
+    DynamicsOptions o;
+    o.method = scene_.simulation.is_static() ? "rk4" : scene_.simulation.solver;
+    o.dt = params_.T;
+    o.steps = max_iterations;
+    o.tolerance = scene_.simulation.tolerance;
+    o.force_scale = prepared_.force_scale;
+    o.max_seconds = max_seconds;
+    r = run_dynamics(model, m.state, o);
+  }
+  rep.iterations = r.iterations;
+  rep.residual_relative = r.residual_relative;
+  if (r.diverged) {
+    // Put the sheet back as it was before the slice, and stop until something changes.
+    m.state.x = before;
+    m.state.v.setZero();
+    relaxation_.reset(model, m.state.x);
+    rep.diverged = true;
+    rep.message = r.message + (mode_ == LiveMode::dynamics ? " (try a smaller T or more D)" : "");
+    settled_ = true;
+    return rep;
+  }
+  if (!r.converged) return rep;
+  if (m.releasing && release_step_ < release_increments_) {
+    // The next increment of the release path.
+    ++release_step_;
+    set_release_level(m, 1.0 - static_cast<double>(release_step_) / release_increments_);
+    model_changed();
+    return rep;
+  }
+  settled_ = true;
+  rep.settled = queue_.empty();
+  return rep;
+}
+
+SliceReport ViewerSession::settle(long max_iterations) {
+  SliceReport total;
+  long spent = 0;
+  while (spent < max_iterations) {
+    const SliceReport s = advance(std::min<long>(5000, max_iterations - spent));
+    spent += std::max<long>(1, s.iterations);
+    total.iterations += s.iterations;
+    total.residual_relative = s.residual_relative;
+    if (!s.message.empty()) total.message = s.message;
+    if (s.diverged) {
+      total.diverged = true;
+      return total;
+    }
+    if (s.settled && queue_.empty()) {
+      total.settled = true;
+      return total;
+    }
+  }
+  return total;
+}
+
+void ViewerSession::play_scene_protocol() {
+  for (const ProtocolStep& s : scene_.protocol) queue_.push_back(&s);
+  if (!settled_) return;
+  const ProtocolStep* first = queue_.front();
+  queue_.pop_front();
+  apply_scene_step(*first);
+}
+
+std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
+  const size_t index = static_cast<size_t>(&step - scene_.protocol.data());
+  // The log keeps the scene's step as written (with its defaults left out).
+  const nlohmann::json& written = scene_.source["protocol"][index];
+  auto logged = [&](const std::string& why) {
+    if (why.empty() && !log_.empty()) log_.back() = written;
+    return why;
+  };
+  switch (step.kind) {
+    case ProtocolStep::Kind::stretch: {
+      const Vec2 keep = params_.lambda;
+      params_.lambda = step.lambda;
+      const std::string why = stretch();
+      params_.lambda = keep;
+      return logged(why);
+    }
+    case ProtocolStep::Kind::impregnate:
+      if (stage_ == Stage::flat || stage_ == Stage::released)
+        return "impregnate needs the stretched sheet";
+      scene_pattern_used_ = true;
+      return logged(impregnate_with(step.pattern, step.pattern_json));
+    case ProtocolStep::Kind::release:
+      return logged(release());
+    case ProtocolStep::Kind::cut: {
+      push_undo();
+      int n = 0;
+      if (!step.cut_line.empty()) n += cut_along(prepared_.membrane, step.cut_line);
+      if (step.hole) n += punch_hole(prepared_.membrane, *step.hole);
+      log_.push_back(written);
+      model_changed();
+      return n > 0 ? "" : "the scene's cut touches no spring";
+    }
+    case ProtocolStep::Kind::load:
+      push_undo();
+      if (step.gravity) {
+        params_.G = *step.gravity;
+        prepared_.membrane.sheet.model.gravity = Vec3(0.0, 0.0, -*step.gravity);
+      }
+      apply_pins(step.pins, prepared_.membrane.sheet.grid, prepared_.membrane.sheet.model);
+      log_.push_back(written);
+      model_changed();
+      return "";
+    default:
+      return std::string("the scene's step ") + step.pointer +
+             " (grow, add_springs, curvature_map) is not available in the viewer: run the scene "
+             "with `membra run`";
+  }
+}
+
+nlohmann::json ViewerSession::to_scene_json() const {
+  nlohmann::json j = scene_.source;
+  j["protocol"] = log_;
+  if (scene_.benchmark_n == 0) {
+    nlohmann::json& sim = j["simulation"];
+    sim["K"] = params_.K / units::N_per_mm;
+    sim["G"] = params_.G;
+    sim["T"] = params_.T;
+    sim["D"] = params_.D;
+  }
+  return j;
+}
+
+}  // namespace membra

@@ -1,0 +1,212 @@
+// The viewer's session without a window: the protocol buttons, painting, cuts, holes, pins,
+// live parameters, undo/redo, and that a saved session is a scene `membra run` reproduces.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "membra/io/run.hpp"
+#include "membra/io/scene.hpp"
+#include "membra/model/units.hpp"
+#include "membra/view/color_field.hpp"
+#include "membra/view/viewer_session.hpp"
+
+namespace membra {
+namespace {
+using nlohmann::json;
+
+// 100 x 100 mm latex on 13 x 13 particles, weightless; stretched 1.5 along x, held left/right.
+Scene small_scene(json protocol = json::array()) {
+  return parse_scene({{"name", "small"},
+                      {"sheet", {{"size", {100, 100}}, {"resolution", {13, 13}}}},
+                      {"simulation", {{"G", 0.0}}},
+                      {"protocol", protocol}});
+}
+
+Vec2 mm(double x, double y) {
+  return Vec2(x, y) * units::mm;
+}
+
+int resin_springs(const ViewerSession& s) {
+  const auto& f = s.membrane().resin_fraction;
+  return static_cast<int>(std::count_if(f.begin(), f.end(), [](double r) { return r > 0.0; }));
+}
+
+TEST(ViewerSession, TheProtocolButtonsGoInOrder) {
+  ViewerSession s(small_scene());
+  EXPECT_EQ(s.stage(), Stage::flat);
+  EXPECT_NE(s.impregnate(), "");  // nothing stretched yet
+  EXPECT_NE(s.release(), "");
+  ASSERT_EQ(s.stretch(), "");
+  EXPECT_EQ(s.stage(), Stage::stretched);
+  EXPECT_NE(s.stretch(), "");  // once
+  // The frame is 1.5 x 100 mm wide now.
+  const Points& x = s.membrane().state.x;
+  EXPECT_NEAR(x.row(0).maxCoeff(), 0.150, 1e-12);
+  EXPECT_NE(s.impregnate(), "");  // no resin painted
+  ASSERT_EQ(s.paint(mm(75, 50), 15 * units::mm), "");
+  ASSERT_EQ(s.impregnate(), "");
+  EXPECT_EQ(s.stage(), Stage::impregnated);
+  EXPECT_GT(resin_springs(s), 10);
+  EXPECT_NE(s.paint(mm(20, 20), 5 * units::mm), "");  // after impregnation: refused
+  ASSERT_EQ(s.release(), "");
+  EXPECT_EQ(s.stage(), Stage::released);
+  EXPECT_EQ(s.log().size(), 3u);
+}
+
+TEST(ViewerSession, PaintedResinLiesUnderTheBrushAndEraseRemovesIt) {
+  ViewerSession s(small_scene());
+  ASSERT_EQ(s.stretch(), "");
+  ASSERT_EQ(s.paint(mm(75, 50), 20 * units::mm), "");
+  ASSERT_EQ(s.paint(mm(75, 50), 10 * units::mm, true), "");  // a ring is left
+  const PatternPtr p = s.resin_pattern();
+  ASSERT_TRUE(p);
+  EXPECT_TRUE(p->contains(mm(75 + 15, 50)));
+  EXPECT_FALSE(p->contains(mm(75, 50)));
+  EXPECT_FALSE(p->contains(mm(75 + 25, 50)));
+  // The pattern colour shows it before impregnation: 1 on the ring, 0 in the hole.
+  const ColorField f = color_field(s, ColorMode::pattern);
+  const int centre = s.nearest_particle(mm(75, 50));
+  const int ring = s.nearest_particle(mm(75 + 12.5, 50));
+  EXPECT_EQ(f.values[static_cast<size_t>(centre)], 0.0);
+  EXPECT_EQ(f.values[static_cast<size_t>(ring)], 1.0);
+  // The JSON of the same pattern reads back as the same region.
+  json scene = s.to_scene_json();
+  scene["protocol"].push_back({{"step", "impregnate"}, {"pattern", s.resin_pattern_json()}});
+  const PatternPtr again = scene_pattern(parse_scene(scene));
+  for (const Vec2& q : {mm(90, 50), mm(75, 50), mm(100, 50), mm(75, 62)})
+    EXPECT_EQ(again->contains(q), p->contains(q)) << q.transpose();
+}
+
+TEST(ViewerSession, UndoAndRedoRestoreTheMembraneExactly) {
+  ViewerSession s(small_scene());
+  ASSERT_EQ(s.stretch(), "");
+  const Points stretched = s.membrane().state.x;
+  s.begin_edit();  // one brush drag of three dabs
+  for (double x : {60.0, 75.0, 90.0}) ASSERT_EQ(s.paint(mm(x, 50), 8 * units::mm), "");
+  s.end_edit();
+  ASSERT_EQ(s.impregnate(), "");
+  ASSERT_EQ(s.release(), "");
+  s.settle();
+  const Points released = s.membrane().state.x;
+  EXPECT_GT((released - stretched).norm(), 1e-3);
+
+  ASSERT_TRUE(s.undo());  // release
+  EXPECT_EQ(s.stage(), Stage::impregnated);
+  EXPECT_EQ(s.membrane().state.x, stretched);
+  ASSERT_TRUE(s.undo());  // impregnate
+  EXPECT_EQ(resin_springs(s), 0);
+  EXPECT_EQ(s.strokes().size(), 3u);
+  ASSERT_TRUE(s.undo());  // the whole drag at once
+  EXPECT_TRUE(s.strokes().empty());
+  ASSERT_TRUE(s.redo());
+  ASSERT_TRUE(s.redo());
+  ASSERT_TRUE(s.redo());
+  EXPECT_EQ(s.stage(), Stage::released);
+  EXPECT_EQ(s.membrane().state.x, released);
+  EXPECT_FALSE(s.redo());
+}
+
+TEST(ViewerSession, ASavedSessionIsASceneThatRunReproduces) {
+  ViewerSession s(small_scene());
+  ASSERT_EQ(s.stretch(), "");
+  ASSERT_EQ(s.paint(mm(75, 50), 18 * units::mm), "");
+  ASSERT_EQ(s.impregnate(), "");
+  ASSERT_EQ(s.release(), "");
+  const SliceReport r = s.settle();
+  ASSERT_TRUE(r.settled) << r.message;
+  const Scene saved = parse_scene(s.to_scene_json());
+  const RunResult run = run_scene(saved);
+  ASSERT_TRUE(run.solve.converged);
+  // Same path, same solver: the same form up to the solver's tolerance (the viewer checks
+  // convergence at slice ends as well, so it may stop a few iterations apart).
+  const Points& a = s.membrane().state.x;
+  const Points& b = run.prepared.membrane.state.x;
+  ASSERT_EQ(a.cols(), b.cols());
+  const double size = 0.1;
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-4 * size);
+  EXPECT_GT(a.row(2).maxCoeff() - a.row(2).minCoeff(), 1e-3 * size);  // it did bow
+}
+
+TEST(ViewerSession, CutsHolesAndPinsChangeTheSheetAndUndo) {
+  ViewerSession s(small_scene());
+  ASSERT_EQ(s.stretch(), "");
+  const int springs = s.membrane().sheet.model.springs.size();
+  ASSERT_EQ(s.cut(mm(75, 20), mm(75, 80)), "");
+  EXPECT_LT(s.membrane().sheet.model.springs.size(), springs);
+  EXPECT_NE(s.cut(mm(400, 400), mm(500, 500)), "");  // outside: refused, nothing logged
+  const int particles = s.membrane().sheet.model.num_particles();
+  ASSERT_EQ(s.hole(mm(110, 50), 12 * units::mm), "");
+  EXPECT_LT(s.membrane().sheet.model.num_particles(), particles);
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.membrane().sheet.model.num_particles(), particles);
+
+  const int p = s.nearest_particle(mm(75, 50));
+  ASSERT_EQ(s.toggle_pin(mm(75, 50)), "");
+  EXPECT_TRUE(s.membrane().sheet.model.pinned(p));
+  ASSERT_EQ(s.toggle_pin(mm(75, 50)), "");
+  EXPECT_FALSE(s.membrane().sheet.model.pinned(p));
+  EXPECT_NE(s.toggle_pin(Vec2(0, 50 * units::mm)), "");  // held by the frame
+  // The log keeps the cut, not the pin that was taken back.
+  ASSERT_EQ(s.log().size(), 2u);
+  EXPECT_EQ(s.log()[1]["step"], "cut");
+}
+
+TEST(ViewerSession, LiveParametersChangeTheModel) {
+  ViewerSession s(small_scene());
+  LiveParameters p = s.parameters();
+  EXPECT_NEAR(p.K, 0.75 * 1.5e6 * 0.5e-3, 1e-9);  // 3/4 E t of latex
+  const double k0 = s.membrane().sheet.model.springs.stiffness[0];
+  p.K *= 2.0;
+  p.G = 3.0;
+  p.D = 7.0;
+  ASSERT_EQ(s.set_parameters(p), "");
+  EXPECT_NEAR(s.membrane().sheet.model.springs.stiffness[0], 2.0 * k0, 1e-12 * k0);
+  EXPECT_EQ(s.membrane().sheet.model.gravity.z(), -3.0);
+  EXPECT_EQ(s.membrane().sheet.model.velocity_damping, 7.0);
+  EXPECT_NEAR(s.to_scene_json()["simulation"]["K"].get<double>(), p.K / 1e3, 1e-12);
+  LiveParameters bad = p;
+  bad.K = -1.0;
+  EXPECT_NE(s.set_parameters(bad), "");
+  bad = p;
+  bad.lambda.x() = 0.0;
+  EXPECT_NE(s.set_parameters(bad), "");
+  EXPECT_EQ(s.parameters().K, p.K);  // refused changes leave everything as it was
+}
+
+TEST(ViewerSession, ADivergingStepIsUndoneNotShown) {
+  ViewerSession s(small_scene());
+  ASSERT_EQ(s.stretch(), "");
+  s.set_mode(LiveMode::dynamics);
+  LiveParameters p = s.parameters();
+  p.T = 1e-2;  // far beyond RK4's stability limit for this grid
+  ASSERT_EQ(s.set_parameters(p), "");
+  ASSERT_EQ(s.paint(mm(75, 50), 20 * units::mm), "");
+  ASSERT_EQ(s.impregnate(), "");
+  ASSERT_EQ(s.release(), "");
+  const Points before = s.membrane().state.x;
+  SliceReport r;
+  for (int i = 0; i < 20 && !r.diverged; ++i) r = s.advance(200);
+  ASSERT_TRUE(r.diverged);
+  EXPECT_NE(r.message.find("smaller T"), std::string::npos) << r.message;
+  EXPECT_TRUE(s.membrane().state.x.allFinite());
+}
+
+TEST(ViewerSession, PlaysTheScenesOwnProtocol) {
+  const json protocol = {
+      {{"step", "stretch"}, {"lambda", {1.5, 1.0}}, {"hold", {"left", "right"}}},
+      {{"step", "impregnate"},
+       {"pattern", {{"strip", {{"points", {{30, 50}, {120, 50}}}, {"width", 12}}}}}},
+      {{"step", "release"}, {"increments", 4}}};
+  ViewerSession s(small_scene(protocol));
+  EXPECT_EQ(s.parameters().lambda, Vec2(1.5, 1.0));
+  s.play_scene_protocol();
+  const SliceReport r = s.settle();
+  ASSERT_TRUE(r.settled) << r.message;
+  EXPECT_EQ(s.stage(), Stage::released);
+  EXPECT_GT(resin_springs(s), 5);
+  // The log is the scene's protocol, so saving and running gives the same result.
+  EXPECT_EQ(s.log(), json(protocol));
+}
+
+}  // namespace
+}  // namespace membra
