@@ -13,7 +13,9 @@
 #include "membra/io/scene.hpp"
 #include "membra/render/run_outputs.hpp"
 #include "membra/version.hpp"
+#include "membra/view/view_script.hpp"
 #include "progress_bar.hpp"
+#include "view_command.hpp"
 
 namespace {
 
@@ -121,6 +123,18 @@ int main(int argc, char** argv) {
   bench->add_option("--json-out", bench_args.json_out, "Also write the JSON to this file");
   bench->add_flag("--quiet,-q", bench_args.quiet, "No per-run log on stderr");
 
+  membra::viewer::ViewArgs view_args;
+  auto* view = app.add_subcommand("view", "The interactive viewer (or a script driving it)");
+  view->add_option("scene", view_args.scene, "Scene file (JSON); default: a plain latex sheet");
+  view->add_option("--script", view_args.script,
+                   "Run the commands in FILE (one a line) instead of waiting for the mouse");
+  view->add_option("--set", view_args.sets, set_help)->type_name("PATH=VALUE");
+  view->add_option("--size", view_args.size, "Window size in pixels")
+      ->expected(2)
+      ->type_name("W H");
+  bool script_help = false;
+  view->add_flag("--script-help", script_help, "List the script commands");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -136,6 +150,14 @@ int main(int argc, char** argv) {
       return cmd_run(scene_file, sets, out_dir, quiet, run_opts);
     }
     if (*validate) return cmd_validate(scene_file, sets, quiet);
+    if (*view) {
+      if (script_help) {
+        std::cout << "membra view --script FILE: one command a line ('#' comments)\n"
+                  << membra::view_script_help();
+        return kOk;
+      }
+      return membra::viewer::run_view(view_args);
+    }
     if (*bench) {
       try {
         return membra::cli::cmd_bench(bench_args);

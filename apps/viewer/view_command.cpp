@@ -1,0 +1,111 @@
+#include "view_command.hpp"
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+
+#include "membra/io/input_error.hpp"
+#include "membra/io/output_set.hpp"
+#include "membra/io/scene.hpp"
+#include "membra/view/session_files.hpp"
+#include "membra/view/view_script.hpp"
+#include "viewer_window.hpp"
+
+namespace membra::viewer {
+namespace {
+
+constexpr int kBadInput = 2, kNoDisplay = 3;
+
+// The scene the viewer opens without one: a plain latex sheet on a 1.5 x 1 frame.
+Scene default_scene(const std::vector<std::string>& sets) {
+  nlohmann::json j = {
+      {"name", "sheet"},
+      {"sheet", {{"size", {200, 200}}, {"resolution", {41, 41}}, {"material", "latex"}}},
+      {"simulation", {{"G", 0.0}}},
+      {"protocol", {{{"step", "stretch"}, {"lambda", {1.5, 1.0}}}}}};
+  for (const std::string& s : sets) apply_override(j, s);
+  return parse_scene(j);
+}
+
+// Runs a script: session commands act at once, `step N` draws N frames, window commands here.
+int run_script(const std::vector<ScriptCommand>& script, ViewerSession& session,
+               ViewSettings& settings, ViewerWindow& window) {
+  for (const ScriptCommand& c : script) {
+    if (c.name == "quit") return 0;
+    if (c.name == "step") {
+      // Frames with the live simulation, each a fixed number of iterations (reproducible).
+      const long frames = static_cast<long>(c.number(0));
+      for (long f = 0; f < frames; ++f) {
+        const SliceReport r = session.advance(settings.iterations_per_frame);
+        if (r.diverged) throw InputError(c.where, r.message);
+        window.frame(session, settings, false, nullptr);
+      }
+      continue;
+    }
+    if (c.name == "fps") {
+      // As the interactive loop runs: a time slice of simulation and a full redraw per frame.
+      const long frames = static_cast<long>(c.number(0));
+      const auto t0 = std::chrono::steady_clock::now();
+      for (long f = 0; f < frames; ++f) window.frame(session, settings, true, nullptr);
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::cout << "fps: " << static_cast<double>(frames) / s << " frames/s (" << frames
+                << " frames, " << session.membrane().sheet.model.num_particles() << " particles)\n";
+      continue;
+    }
+    if (run_session_command(c, session, settings)) {
+      window.frame(session, settings, false, nullptr);
+      continue;
+    }
+    try {
+      if (c.name == "screenshot") {
+        Image img;
+        window.frame(session, settings, false, &img);
+        write_png(c.words[0], img);
+      } else if (c.name == "save") {
+        save_session_scene(session, c.words[0]);
+      } else if (c.name == "export") {
+        export_session(session, c.words[0]);
+      }
+    } catch (const OutputError& e) {
+      throw InputError(c.where, e.what());
+    } catch (const RenderError& e) {
+      throw InputError(c.where, e.what());
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_view(const ViewArgs& args) {
+  try {
+    Scene scene = args.scene.empty() ? default_scene(args.sets) : load_scene(args.scene, args.sets);
+    std::vector<ScriptCommand> script;
+    if (!args.script.empty()) {
+      std::ifstream in(args.script);
+      if (!in) throw InputError(args.script, "cannot open the script file");
+      script = parse_view_script(in, args.script);  // all checked before a window opens
+    }
+    ViewerSession session(std::move(scene));
+    ViewSettings settings;
+    if (args.size.size() != 2 || args.size[0] < 400 || args.size[1] < 300 || args.size[0] > 8192 ||
+        args.size[1] > 8192)
+      throw InputError("--size", "the window needs 400..8192 x 300..8192 pixels");
+    std::unique_ptr<ViewerWindow> window;
+    try {
+      window = std::make_unique<ViewerWindow>(args.size[0], args.size[1], args.script.empty());
+    } catch (const RenderError& e) {
+      std::cerr << "membra view: " << e.what() << "\n";
+      return kNoDisplay;
+    }
+    if (!args.scene.empty()) window->set_scene_path(args.scene);
+    if (!script.empty()) return run_script(script, session, settings, *window);
+    while (!window->should_close()) window->frame(session, settings, true, nullptr);
+    return 0;
+  } catch (const InputError& e) {
+    std::cerr << "membra view: " << e.what() << "\n";
+    return kBadInput;
+  }
+}
+
+}  // namespace membra::viewer

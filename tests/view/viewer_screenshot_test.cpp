@@ -1,0 +1,124 @@
+// The viewer in a real window under Xvfb, driven by a script: its screenshots show the sheet,
+// the colours of the chosen map and the legend. Runs `membra view` as a user would.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <stb_image.h>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include "test_util.hpp"
+
+namespace membra {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr int kPanel = 330;  // the control panel's width (viewer_window.cpp)
+
+struct Png {
+  int w = 0, h = 0;
+  std::vector<unsigned char> rgb;
+  std::array<int, 3> at(int x, int y) const {
+    const size_t i = (static_cast<size_t>(y) * w + x) * 3;
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+};
+
+Png load(const fs::path& file) {
+  Png p;
+  int n = 0;
+  unsigned char* d = stbi_load(file.c_str(), &p.w, &p.h, &n, 3);
+  if (!d) return p;
+  p.rgb.assign(d, d + static_cast<size_t>(p.w) * p.h * 3);
+  stbi_image_free(d);
+  return p;
+}
+
+// Pixels of the sheet area (right of the panel, left of the legend) that satisfy `f`.
+template <class F>
+int count(const Png& p, F f) {
+  int n = 0;
+  const int legend_x = kPanel + (p.w - kPanel) * 4 / 5;
+  for (int y = 0; y < p.h; ++y)
+    for (int x = kPanel; x < legend_x; ++x)
+      if (f(p.at(x, y))) ++n;
+  return n;
+}
+bool red(const std::array<int, 3>& c) {
+  return c[0] > 180 && c[1] < 90 && c[2] < 90;
+}
+bool blue(const std::array<int, 3>& c) {
+  return c[2] > 180 && c[0] < 90 && c[1] < 90;
+}
+bool greenish(const std::array<int, 3>& c) {
+  return c[1] > 100 && c[0] < c[1] && c[2] < c[1];
+}
+bool white(const std::array<int, 3>& c) {
+  return c[0] > 245 && c[1] > 245 && c[2] > 245;
+}
+
+// The colour bar: red at its top, blue at its bottom, in the legend column.
+void expect_legend(const Png& p, const std::string& name) {
+  const int scene_w = p.w - kPanel;
+  const int x = kPanel + static_cast<int>(0.855 * scene_w);
+  EXPECT_TRUE(red(p.at(x, static_cast<int>(0.16 * p.h)))) << name << ": no red at the bar's top";
+  EXPECT_TRUE(blue(p.at(x, static_cast<int>(0.84 * p.h)))) << name << ": no blue at its bottom";
+}
+
+TEST(ViewerScreenshot, ScriptedViewerDrawsTheSheetItsColoursAndTheLegend) {
+  const fs::path dir = unique_temp_dir();
+  fs::create_directories(dir);
+  {
+    std::ofstream scene(dir / "scene.json");
+    scene << R"({"name": "shot", "sheet": {"size": [100, 100], "resolution": [17, 17]},
+                 "simulation": {"G": 0}})";
+    std::ofstream script(dir / "script.txt");
+    script << "color pattern\nstretch\npaint 75 50 18\nview 2d\n"
+           << "screenshot " << (dir / "pattern.png").string() << "\n"
+           << "impregnate\nrelease\nstep 60\nview 3d\ncolor stress\n"
+           << "screenshot " << (dir / "stress.png").string() << "\n"
+           << "color curvature\n"
+           << "screenshot " << (dir / "curvature.png").string() << "\n"
+           << "save " << (dir / "saved.json").string() << "\nquit\n";
+  }
+  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(MEMBRA_CLI) +
+                          " view " + (dir / "scene.json").string() + " --script " +
+                          (dir / "script.txt").string() + " --size 1000 700 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+
+  const Png pattern = load(dir / "pattern.png");
+  ASSERT_EQ(pattern.w, 1000) << "no screenshot";
+  ASSERT_EQ(pattern.h, 700);
+  // 2-D view: the latex sheet (blue: no resin) with a painted disc (red), and the legend.
+  const int area = (pattern.w - kPanel) * 4 / 5 * pattern.h;
+  EXPECT_GT(count(pattern, blue), area / 5);
+  EXPECT_GT(count(pattern, red), area / 100);
+  expect_legend(pattern, "pattern.png");
+  // The panel is drawn on the left (not the white background).
+  EXPECT_FALSE(white(pattern.at(kPanel / 2, pattern.h / 2)));
+
+  const Png stress = load(dir / "stress.png");
+  ASSERT_EQ(stress.w, 1000);
+  EXPECT_GT(count(stress, [](const auto& c) { return !white(c); }), area / 10);  // the sheet
+  EXPECT_GT(count(stress, greenish), area / 20);  // the map's colours (near-zero stress)
+  expect_legend(stress, "stress.png");
+  const Png curvature = load(dir / "curvature.png");
+  ASSERT_EQ(curvature.w, 1000);
+  EXPECT_GT(count(curvature, greenish), area / 20);
+  expect_legend(curvature, "curvature.png");
+  // The two maps colour the sheet differently.
+  EXPECT_NE(stress.rgb, curvature.rgb);
+  EXPECT_TRUE(fs::exists(dir / "saved.json"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace membra
