@@ -42,6 +42,8 @@ struct ViewerWindow::Impl {
   std::string status = "ready";
   std::string scene_path = "session.json";
   std::string export_path = "form.obj";
+  std::string screenshot_path = "screenshot.png";
+  bool screenshot_pending = false;  // the Screenshot button: capture this frame
   Tool tool = Tool::orbit;
   double hole_radius = 0.01;  // m
   // Mouse drag state.
@@ -329,6 +331,9 @@ struct ViewerWindow::Impl {
           export_session(s, export_path);
           status = "wrote " + export_path;
         });
+      std::snprintf(buf, sizeof buf, "%s", screenshot_path.c_str());
+      if (ImGui::InputText("png", buf, sizeof buf)) screenshot_path = buf;
+      if (ImGui::Button("Screenshot")) screenshot_pending = true;
     }
     ImGui::Separator();
     ImGui::TextWrapped("%s", status.c_str());
@@ -477,6 +482,8 @@ void ViewerWindow::frame(ViewerSession& session, ViewSettings& settings, bool si
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   r.draw_scene(session, settings);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  Image button_shot;
+  if (!capture && r.screenshot_pending) capture = &button_shot;
   if (capture) {
     // The back buffer, before it is shown; OpenGL's rows start at the bottom.
     std::vector<std::uint8_t> rgba(static_cast<size_t>(w) * h * 4);
@@ -489,6 +496,13 @@ void ViewerWindow::frame(ViewerSession& session, ViewSettings& settings, bool si
         for (int c = 0; c < 3; ++c)
           capture->rgb[(static_cast<size_t>(y) * w + x) * 3 + c] =
               rgba[(static_cast<size_t>(h - 1 - y) * w + x) * 4 + c];
+  }
+  if (r.screenshot_pending) {
+    r.screenshot_pending = false;
+    r.guarded([&] {
+      write_png(r.screenshot_path, *capture);
+      r.status = "wrote " + r.screenshot_path;
+    });
   }
   glfwSwapBuffers(r.window);
   const auto now = std::chrono::steady_clock::now();
