@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench_command.hpp"
+#include "design_command.hpp"
 #include "membra/io/input_error.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/report.hpp"
@@ -20,7 +21,15 @@
 namespace {
 
 // Exit codes, documented in docs/cli.md.
-enum Exit : int { kOk = 0, kInternal = 1, kBadInput = 2, kDiverged = 3, kOutput = 4 };
+enum Exit : int {
+  kOk = 0,
+  kInternal = 1,
+  kBadInput = 2,
+  kDiverged = 3,
+  kOutput = 4,
+  kUnreachable = 5,  // membra design: the target cannot be reached (best attempt written)
+  kNoDisplay = 6     // membra view: no window can be opened
+};
 
 int cmd_validate(const std::string& scene_file, const std::vector<std::string>& sets, bool quiet) {
   const membra::Scene scene = membra::load_scene(scene_file, sets);
@@ -123,6 +132,16 @@ int main(int argc, char** argv) {
   bench->add_option("--json-out", bench_args.json_out, "Also write the JSON to this file");
   bench->add_flag("--quiet,-q", bench_args.quiet, "No per-run log on stderr");
 
+  membra::cli::DesignArgs design_args;
+  auto* design = app.add_subcommand("design", "Inverse design: a stencil for a wanted form");
+  design->require_subcommand(1);
+  auto* design_target =
+      design->add_subcommand("target", "Design a stencil whose released form fits a target");
+  design_target->add_option("file", design_args.file, "Design file (JSON)")->required();
+  design_target->add_option("--out,-o", design_args.out_dir,
+                            "Output directory (default: out/<name>)");
+  design_target->add_flag("--quiet,-q", design_args.quiet, "No progress or summary");
+
   membra::viewer::ViewArgs view_args;
   auto* view = app.add_subcommand("view", "The interactive viewer (or a script driving it)");
   view->add_option("scene", view_args.scene, "Scene file (JSON); default: a plain latex sheet");
@@ -150,6 +169,7 @@ int main(int argc, char** argv) {
       return cmd_run(scene_file, sets, out_dir, quiet, run_opts);
     }
     if (*validate) return cmd_validate(scene_file, sets, quiet);
+    if (*design) return membra::cli::cmd_design(design_args);
     if (*view) {
       if (script_help) {
         std::cout << "membra view --script FILE: one command a line ('#' comments)\n"

@@ -14,7 +14,7 @@
 namespace membra::viewer {
 namespace {
 
-constexpr int kBadInput = 2, kNoDisplay = 3;
+constexpr int kBadInput = 2, kNoDisplay = 6;  // as main.cpp's exit codes
 
 // The scene the viewer opens without one: a plain latex sheet on a 1.5 x 1 frame.
 Scene default_scene(const std::vector<std::string>& sets) {

@@ -12,7 +12,7 @@ struct ViewArgs {
   std::vector<int> size{1280, 800};  // window, pixels
 };
 
-// Returns the process exit code (0 ok, 2 bad input, 3 no display/OpenGL); prints errors.
+// Returns the process exit code (0 ok, 2 bad input, 6 no display/OpenGL); prints errors.
 int run_view(const ViewArgs& args);
 
 }  // namespace membra::viewer

@@ -235,5 +235,49 @@ TEST(CliBench, RunsTheSolversSideBySideOnPn) {
   EXPECT_NE(bad.text.find("unknown solver 'foo'"), std::string::npos) << bad.text;
 }
 
+TEST_F(Cli, DesignWritesTheStencilTheFormAndTheErrorsAndRunReproducesIt) {
+  const fs::path design = write("d.json", R"({"name": "d",
+    "target": {"cylinder": {"size": 150, "height": 20}},
+    "frame": {"size": 200, "lambda": [1.5, 1.5]}, "sheet": {"resolution": 9},
+    "resin": {"min_feature": 4, "cell": 25},
+    "design": {"evaluations": 2, "solver": "newton"}})");
+  const fs::path out = dir / "out";
+  const Output o = membra_cli("design target " + design.string() + " --out " + out.string());
+  ASSERT_EQ(o.code, 0) << o.text;
+  EXPECT_NE(o.text.find("rms error"), std::string::npos) << o.text;
+  for (const char* f : {"scene.json", "pattern.svg", "pattern.dxf", "final.obj", "final.ply",
+                        "target.obj", "comparison.png", "report.json"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  json report;
+  std::ifstream(out / "report.json") >> report;
+  const json& d = report["design"];
+  EXPECT_GT(d["rms_error"].get<double>(), 0.0);
+  EXPECT_GE(d["max_error"].get<double>(), d["rms_error"].get<double>());
+  EXPECT_EQ(d["iterations"].size(), 2u);
+  // The stencil's scene, run as any scene, gives the same form.
+  const Output run =
+      membra_cli("run " + (out / "scene.json").string() + " -q --out " + (dir / "again").string());
+  ASSERT_EQ(run.code, 0) << run.text;
+  std::ifstream a(out / "final.obj"), b(dir / "again" / "final.obj");
+  const std::string sa((std::istreambuf_iterator<char>(a)), {});
+  const std::string sb((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_EQ(sa, sb);
+}
+
+TEST_F(Cli, DesignOfAnUnreachableTargetExplainsAndKeepsTheBestAttempt) {
+  const fs::path design = write("d.json", R"({"name": "d",
+    "target": {"cap": {"diameter": 190, "height": 95}}, "sheet": {"resolution": 9},
+    "resin": {"cell": 25}, "design": {"evaluations": 1, "solver": "newton"}})");
+  const Output o =
+      membra_cli("design target " + design.string() + " -q --out " + (dir / "out").string());
+  EXPECT_EQ(o.code, 5) << o.text;
+  EXPECT_NE(o.text.find("cannot be reached"), std::string::npos) << o.text;
+  EXPECT_NE(o.text.find("more than the stretched frame"), std::string::npos) << o.text;
+  EXPECT_TRUE(fs::exists(dir / "out" / "scene.json"));
+  const Output bad = membra_cli("design target " + write("b.json", "{\"target\": 3}").string());
+  EXPECT_EQ(bad.code, 2) << bad.text;
+  EXPECT_NE(bad.text.find("/target"), std::string::npos) << bad.text;
+}
+
 }  // namespace
 }  // namespace membra

@@ -1,0 +1,47 @@
+#include "design_command.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "membra/io/inverse_design.hpp"
+#include "membra/io/output_set.hpp"
+#include "membra/render/design_outputs.hpp"
+
+namespace membra::cli {
+
+int cmd_design(const DesignArgs& args) {
+  const DesignSpec spec = load_design(args.file);
+  const std::string dir = args.out_dir.empty() ? "out/" + spec.name : args.out_dir;
+  OutputSet out(dir);
+  if (!args.quiet)
+    std::cerr << "membra design: " << spec.target.kind << " target, at most " << spec.evaluations
+              << " forward simulations or " << spec.budget << " s\n";
+  const DesignResult r = run_design(spec, [&](const DesignIteration& it) {
+    if (args.quiet) return;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "  %3d  rms %6.2f %%  max %6.2f %%  resin %4.0f %%  %3d pieces  %6.1f s%s%s%s\n",
+                  it.index, it.rms_error, it.max_error, 100.0 * it.resin_share, it.pieces,
+                  it.seconds, it.best ? "  best" : "", it.note.empty() ? "" : "  ",
+                  it.note.c_str());
+    std::cerr << line;
+  });
+  const std::string note = stage_design_outputs(r, out);
+  out.commit();
+  if (!note.empty()) std::cerr << "membra: warning: no PNG renders: " << note << "\n";
+  if (!args.quiet)
+    std::cout << "design: rms error " << r.rms_error << " %, max " << r.max_error
+              << " % of the target's diameter after " << r.history.size() << " simulations ("
+              << r.seconds << " s); a flat sheet scores " << r.flat_error << " %\nresults in "
+              << out.dir().string()
+              << "/ (scene.json, pattern.svg, pattern.dxf, final.obj, final.ply, "
+                 "comparison.png, report.json)\n";
+  if (!r.reachable) {
+    std::cerr << "membra: " << args.file << ": the target cannot be reached: " << r.message
+              << "\nmembra: the best attempt is in " << out.dir().string() << "/\n";
+    return 5;  // main.cpp's kUnreachable
+  }
+  return 0;
+}
+
+}  // namespace membra::cli

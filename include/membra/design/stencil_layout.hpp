@@ -1,0 +1,33 @@
+#pragma once
+// From a resin density (0..1 over the frame) to a stencil that can be cut: a square cell grid,
+// one centred square of resin per cell with the cell's density as its area share. Squares
+// smaller than the minimum feature are left out, and gaps narrower than it are closed (the cell
+// is filled), so every piece and every gap of the stencil is at least that wide.
+#include <functional>
+
+#include <nlohmann/json.hpp>
+
+#include "membra/model/pattern.hpp"
+
+namespace membra {
+
+struct StencilLayout {
+  double cell = 0.02;          // m, pitch of the cell grid (frame coordinates)
+  double min_feature = 0.004;  // m, the narrowest piece or gap the stencil may have
+};
+
+struct Stencil {
+  PatternPtr pattern;        // nullptr when no cell gets resin
+  nlohmann::json json;       // the same as a scene pattern (mm); null when empty
+  double resin_share = 0.0;  // of the frame area inside the outline
+  int pieces = 0;            // squares of resin
+};
+
+// `density(p)` at each cell centre p (frame coordinates, m); cells whose centre is not
+// `inside` (the sheet's outline on the frame) stay empty. Throws std::invalid_argument when the
+// cell is narrower than twice the minimum feature (then no density but 0 or 1 is possible).
+Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const Box2& frame,
+                       const StencilLayout& layout,
+                       const std::function<bool(const Vec2&)>& inside = {});
+
+}  // namespace membra

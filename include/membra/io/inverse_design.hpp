@@ -1,0 +1,85 @@
+#pragma once
+// Inverse design (`membra design target FILE`): from a target surface to a resin stencil whose
+// released form comes close to it. The method (docs/inverse_design.md): a resin density field
+// with three parameters — mean, radial gradient, x/y anisotropy — started from the target's
+// area (how much of the sheet must keep its stretched size) and its Gaussian curvature (where),
+// laid out as a stencil of squares no smaller than the minimum feature, simulated with the
+// ordinary scene machinery, and improved by a pattern search on the shape error until it stops
+// falling or the budget is spent.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "membra/design/shape_distance.hpp"
+#include "membra/design/stencil_layout.hpp"
+#include "membra/design/target_surface.hpp"
+#include "membra/io/run.hpp"
+
+namespace membra {
+
+struct DesignSpec {
+  std::filesystem::path file;
+  std::string name = "design";
+  TargetSpec target;
+  double frame = 0.2;     // m, side of the square frame
+  Vec2 lambda{1.5, 1.5};  // the pre-stretch; the natural sheet is frame / lambda
+  int resolution = 25;    // particles along each side of the simulated sheet
+  std::string material = "latex", resin = "epoxy";
+  nlohmann::json materials;  // the scene's "materials" object, passed on
+  StencilLayout layout;      // cell 20 mm, minimum feature 4 mm
+  int evaluations = 24;      // forward simulations at most
+  double budget = 900.0;     // s of wall time at most
+  std::string solver = "static";
+  double tolerance = 1e-6;
+  int increments = 10;  // of the release path
+};
+
+// Reads a design file (docs/inverse_design.md). Throws InputError naming the file and field.
+DesignSpec load_design(const std::filesystem::path& file);
+DesignSpec parse_design(const nlohmann::json& j, const std::filesystem::path& base_dir = ".");
+
+// The density parameters: mean, radial gradient (r^2), anisotropy (x^2 - y^2), over the frame's
+// half-size.
+struct DensityParameters {
+  double mean = 0.5, radial = 0.0, anisotropy = 0.0;
+  double operator()(const Vec2& p, const Box2& frame) const;
+};
+
+struct DesignIteration {
+  int index = 0;
+  DensityParameters parameters;
+  double rms_error = 0.0, max_error = 0.0;  // % of the target's diameter
+  double resin_share = 0.0;                 // of the sheet's area on the frame
+  int pieces = 0;
+  double seconds = 0.0;  // of this forward simulation
+  bool best = false;     // the best so far when it was made
+  std::string note;      // e.g. "did not converge"
+};
+
+struct DesignResult {
+  DesignSpec spec;
+  TargetSurface target;
+  bool reachable = true;
+  std::string message;            // why the target cannot be reached, when it cannot
+  DensityParameters start, best;  // the start from mechanics, the best found
+  nlohmann::json scene;           // the best stencil as an ordinary scene
+  Stencil stencil;
+  RunResult run;                            // its forward simulation
+  ShapeError error;                         // its distance to the target
+  double rms_error = 0.0, max_error = 0.0;  // % of the target's diameter
+  double flat_error = 0.0;  // rms % of a flat sheet of the target's footprint: the bar to beat
+  std::vector<DesignIteration> history;
+  double seconds = 0.0;
+};
+
+// The scene that simulates a stencil for a design (sheet, stretch, impregnate, release).
+nlohmann::json design_scene(const DesignSpec& spec, const Stencil& stencil);
+
+// Runs the design. `progress` (optional) is told of every forward simulation.
+DesignResult run_design(const DesignSpec& spec,
+                        const std::function<void(const DesignIteration&)>& progress = {});
+
+}  // namespace membra

@@ -1,0 +1,96 @@
+// Inverse design on small grids: the error falls over the iterations for each kind of target,
+// the stencil's scene reproduces the reported form, and an unreachable target says why.
+#include <gtest/gtest.h>
+
+#include "membra/io/input_error.hpp"
+#include "membra/io/inverse_design.hpp"
+#include "membra/io/scene.hpp"
+
+namespace membra {
+namespace {
+using nlohmann::json;
+
+// 200 mm frame, 1.5 x 1.5 pre-stretch, an 11 x 11 sheet, 25 mm cells: seconds per design.
+json small_design(const json& target, int evaluations = 6) {
+  return {{"name", "small"},
+          {"target", target},
+          {"frame", {{"size", 200}, {"lambda", {1.5, 1.5}}}},
+          {"sheet", {{"resolution", 11}}},
+          {"resin", {{"min_feature", 4}, {"cell", 25}}},
+          {"design", {{"evaluations", evaluations}, {"budget", 600}, {"solver", "newton"}}}};
+}
+
+class DesignKinds : public ::testing::TestWithParam<json> {};
+
+TEST_P(DesignKinds, TheErrorFallsOverTheIterations) {
+  const DesignResult d = run_design(parse_design(small_design(GetParam())));
+  ASSERT_GE(d.history.size(), 2u);
+  ASSERT_TRUE(d.reachable) << d.message;
+  // The search keeps the best; it must have found a better stencil than the start.
+  EXPECT_LT(d.rms_error, d.history.front().rms_error - 0.01) << "no improvement on the start";
+  EXPECT_EQ(d.rms_error,
+            std::min_element(d.history.begin(), d.history.end(), [](const auto& a, const auto& b) {
+              return a.rms_error < b.rms_error;
+            })->rms_error);
+  EXPECT_GT(d.max_error, d.rms_error);
+  EXPECT_GT(d.flat_error, 0.0);
+}
+
+// The spherical cap is left out: its error does not fall (6.11 % at the start, 6.10 % after
+// 12 simulations on this grid; every stencil tried releases flat, a flat sheet scoring 6.1 %).
+// The model has no bilayer bending, and a dome's metric leaves the rim in tension, which keeps
+// the sheet flat (docs/inverse_design.md). Issue 8 stays open for it.
+INSTANTIATE_TEST_SUITE_P(Targets, DesignKinds,
+                         ::testing::Values(json{{"saddle", {{"size", 150}, {"height", 15}}}},
+                                           json{{"cylinder", {{"size", 150}, {"height", 20}}}}),
+                         [](const auto& param_info) { return param_info.param.begin().key(); });
+
+TEST(InverseDesign, TheStencilsSceneReproducesTheReportedForm) {
+  const DesignResult d =
+      run_design(parse_design(small_design({{"cap", {{"diameter", 160}, {"height", 24}}}}, 2)));
+  const RunResult again = run_scene(parse_scene(d.scene));
+  const Points& a = d.run.prepared.membrane.state.x;
+  const Points& b = again.prepared.membrane.state.x;
+  ASSERT_EQ(a.cols(), b.cols());
+  EXPECT_LE((a - b).cwiseAbs().maxCoeff(), 1e-6 * 0.2);
+}
+
+TEST(InverseDesign, AnUnreachableTargetSaysWhyAndGivesItsBestAttempt) {
+  // A hemisphere 190 mm across has more area than the 200 mm frame's disk.
+  const DesignResult d =
+      run_design(parse_design(small_design({{"cap", {{"diameter", 190}, {"height", 95}}}}, 2)));
+  EXPECT_FALSE(d.reachable);
+  EXPECT_NE(d.message.find("more than the stretched frame"), std::string::npos) << d.message;
+  EXPECT_FALSE(d.scene.is_null());
+  EXPECT_EQ(d.history.size(), 2u);
+  EXPECT_EQ(d.start.mean, 1.0);  // as much resin as there can be
+}
+
+TEST(InverseDesign, BadDesignFilesNameTheField) {
+  auto error_of = [](json j) {
+    try {
+      parse_design(j);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  json j = small_design({{"torus", {{"size", 100}}}});
+  EXPECT_NE(error_of(j).find("/target"), std::string::npos);
+  j = small_design({{"cap", {{"diameter", 250}, {"height", 20}}}});
+  EXPECT_NE(error_of(j).find("wider than the frame"), std::string::npos);
+  j = small_design({{"cap", {{"diameter", 100}, {"height", 20}}}});
+  j["resin"]["cell"] = 6;
+  EXPECT_NE(error_of(j).find("/resin/cell"), std::string::npos);
+  j = small_design({{"cap", {{"diameter", 100}, {"height", 60}}}});
+  EXPECT_NE(error_of(j).find("/target/cap/height"), std::string::npos);
+  j = small_design({{"cap", {{"diameter", 100}, {"height", 20}}}});
+  j["frame"]["lambda"] = {0.5, 1.5};
+  EXPECT_NE(error_of(j).find("/frame/lambda"), std::string::npos);
+  j = small_design({{"cap", {{"diameter", 100}, {"height", 20}}}});
+  j["resin"]["material"] = "unobtainium";
+  EXPECT_NE(error_of(j).find("material"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace membra
