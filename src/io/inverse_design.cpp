@@ -259,6 +259,7 @@ DesignResult run_design(const DesignSpec& spec,
   // by its step, keep any improvement, halve the steps when none helps.
   DensityParameters best_d = r.start;
   Evaluation best;
+  bool best_converged = false;
   int n = 0;
   auto record = [&](const DensityParameters& d, Evaluation&& e, double seconds) {
     DesignIteration it;
@@ -270,10 +271,15 @@ DesignResult run_design(const DesignSpec& spec,
     it.pieces = e.stencil.pieces;
     it.seconds = seconds;
     it.note = e.note;
-    it.best = e.rms < best.rms;
+    // Only an equilibrium is a prediction: an unconverged state competes only while no
+    // converged one exists.
+    const bool converged = e.note.empty();
+    it.best = (converged && (!best_converged || e.rms < best.rms)) ||
+              (!converged && !best_converged && e.rms < best.rms);
     if (it.best) {
       best = std::move(e);
       best_d = d;
+      best_converged = converged;
     }
     r.history.push_back(it);
     if (progress) progress(it);
@@ -320,6 +326,10 @@ DesignResult run_design(const DesignSpec& spec,
     if (!improved)
       for (double& s : step) s *= 0.5;
   }
+  if (!best_converged)
+    r.message += std::string(r.message.empty() ? "" : " ") +
+                 "No simulation reached equilibrium: the form shown is the last state of the "
+                 "best one, not a prediction (more iterations, or the static solver).";
   r.best = best_d;
   r.scene = std::move(best.scene);
   r.stencil = std::move(best.stencil);
