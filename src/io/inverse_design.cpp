@@ -242,7 +242,13 @@ DesignResult run_design(const DesignSpec& spec,
     e.stencil =
         layout_stencil([&](const Vec2& p) { return d(p, frame); }, frame, spec.layout, inside);
     e.scene = design_scene(spec, e.stencil);
-    e.run = run_scene(parse_scene(e.scene, base));
+    try {
+      e.run = run_scene(parse_scene(e.scene, base));
+    } catch (const InputError& err) {
+      // E.g. squares so small on a coarse grid that they cover no spring: not a form.
+      e.note = std::string("not simulated: ") + err.what();
+      return e;
+    }
     if (e.run.solve.diverged) {
       e.note = "diverged";
       return e;
@@ -326,6 +332,10 @@ DesignResult run_design(const DesignSpec& spec,
     if (!improved)
       for (double& s : step) s *= 0.5;
   }
+  if (best.scene.is_null() || best.run.prepared.membrane.state.x.cols() == 0)
+    throw InputError(spec.file.string(), "no stencil could be simulated: " +
+                                             (r.history.empty() ? std::string("no evaluation")
+                                                                : r.history.back().note));
   if (!best_converged)
     r.message += std::string(r.message.empty() ? "" : " ") +
                  "No simulation reached equilibrium: the form shown is the last state of the "

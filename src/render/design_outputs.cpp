@@ -61,7 +61,7 @@ std::string stage_design_outputs(const DesignResult& d, OutputSet& out) {
   if (!note.empty()) return note;
   try {
     // One picture, one scale: the target in grey on the left, the form moved onto it on the
-    // right (shifted sideways by 1.15 diameters as the camera sees it), coloured by its distance
+    // right (shifted sideways by 1.3 diameters as the camera sees it), coloured by its distance
     // to the target.
     Camera cam;
     cam.elevation = 25.0;
@@ -72,7 +72,7 @@ std::string stage_design_outputs(const DesignResult& d, OutputSet& out) {
     const Membrane& m = d.run.prepared.membrane;
     const Eigen::Index nt = d.target.x.cols(), nf = m.state.x.cols();
     Points both(3, nt + nf);
-    both.leftCols(nt) = d.target.x.colwise() - 1.15 * d.target.diameter * right;
+    both.leftCols(nt) = d.target.x.colwise() - 1.3 * d.target.diameter * right;
     for (Eigen::Index p = 0; p < nf; ++p) both.col(nt + p) = d.error.motion.apply(m.state.x.col(p));
     std::vector<Triangle> tris = d.target.triangles;
     for (Triangle t : m.sheet.triangles) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "membra/io/inverse_design.hpp"
 #include "membra/io/pattern_reader.hpp"
 #include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
@@ -64,15 +65,22 @@ TEST(Schema, PatternKeysMatchTheParser) {
   }
 }
 
-TEST(Schema, EveryExampleSceneIsValid) {
-  int n = 0;
+TEST(Schema, EveryExampleSceneAndDesignIsValid) {
+  int scenes = 0, designs = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::filesystem::path(MEMBRA_SOURCE_DIR) / "examples")) {
     if (entry.path().extension() != ".json") continue;
-    ++n;
-    EXPECT_NO_THROW(prepare_scene(load_scene(entry.path()))) << entry.path();
+    // inverse_*.json are design files for `membra design target` (docs/inverse_design.md).
+    if (entry.path().filename().string().starts_with("inverse_")) {
+      ++designs;
+      EXPECT_NO_THROW(load_design(entry.path())) << entry.path();
+    } else {
+      ++scenes;
+      EXPECT_NO_THROW(prepare_scene(load_scene(entry.path()))) << entry.path();
+    }
   }
-  EXPECT_GE(n, 1);
+  EXPECT_GE(scenes, 1);
+  EXPECT_EQ(designs, 3);
 }
 
 }  // namespace
