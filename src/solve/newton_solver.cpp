@@ -6,6 +6,8 @@
 #include <vector>
 
 #include <Eigen/CholmodSupport>
+
+#include <dlfcn.h>
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCore>
 
@@ -14,6 +16,21 @@
 
 namespace membra {
 namespace {
+
+// The supernodal factorization calls BLAS; OpenBLAS's threads spin against the force passes'
+// and against other work (3x the wall time measured on a busy 2-core machine: 59 s against 41 s
+// for exp2) and make the sums, so the results, depend on the thread count. One BLAS thread keeps
+// Newton deterministic and no slower on these sizes. This sets OpenBLAS's process-wide thread
+// count, when OpenBLAS is the BLAS in use (found by name, so any other BLAS works unchanged).
+void single_threaded_blas() {
+  static const bool once = [] {
+    using SetThreads = void (*)(int);
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+      set(1);
+    return true;
+  }();
+  (void)once;
+}
 
 // The Hessian's sparsity is fixed during a solve: it is built once, with, for every element,
 // the positions of its entries in the matrix's value array, so that each assembly only adds
@@ -177,6 +194,7 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   double energy = potential_energy(model, x);
   double mu = 0.0;  // Levenberg-Marquardt shift, grown when the factorization or the search fails
   // Supernodal Cholesky: fails (info != Success) exactly when the matrix is not positive definite.
+  single_threaded_blas();
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> ldlt;
   ldlt.cholmod().print = 0;  // "not positive definite" is an expected answer here, not news
   HessianAssembler assembler(model, dof, ndof);
