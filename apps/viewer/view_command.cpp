@@ -56,6 +56,41 @@ int run_script(const std::vector<ScriptCommand>& script, ViewerSession& session,
       window.frame(session, settings, false, nullptr);
       continue;
     }
+    if (c.name == "tool") {
+      window.set_tool(c.words[0]);
+      continue;
+    }
+    if (c.name == "holesize") {
+      if (!(c.number(0) > 0.0)) throw InputError(c.where, "holesize: the radius must be positive");
+      window.set_hole_radius(c.number(0) * 1e-3);
+      continue;
+    }
+    if (c.name == "drag" || c.name == "click") {
+      // The left button pressed at the start, moved in steps, released at the end: one frame
+      // each, through the same mouse code as a hand on the mouse.
+      const double x0 = c.number(0), y0 = c.number(1);
+      const double x1 = c.name == "drag" ? c.number(2) : x0,
+                   y1 = c.name == "drag" ? c.number(3) : y0;
+      constexpr int steps = 12;
+      Pointer p;
+      p.x = x0;
+      p.y = y0;
+      window.inject(p);  // hover first: no jump in the drag's first move
+      window.frame(session, settings, false, nullptr);
+      for (int k = 0; k <= steps; ++k) {
+        p.x = x0 + (x1 - x0) * k / steps;
+        p.y = y0 + (y1 - y0) * k / steps;
+        p.down[0] = true;
+        window.inject(p);
+        window.frame(session, settings, false, nullptr);
+      }
+      p.down[0] = false;
+      window.inject(p);
+      window.frame(session, settings, false, nullptr);
+      if (window.status().find("cannot") != std::string::npos)
+        std::cerr << c.where << ": " << window.status() << "\n";
+      continue;
+    }
     try {
       if (c.name == "screenshot") {
         Image img;

@@ -29,6 +29,7 @@ namespace {
 constexpr int kPanelWidth = 330;  // pixels of the control panel on the left
 
 enum class Tool { orbit, paint, erase, cut, hole, pin };
+const char* kToolNames[] = {"orbit", "paint", "erase", "cut", "hole", "pin"};
 
 const std::array<Rgb, 4> kFamilyColors = {Rgb(0.15f, 0.15f, 0.15f), Rgb(0.45f, 0.45f, 0.7f),
                                           Rgb(0.6f, 0.4f, 0.2f), Rgb(0.8f, 0.1f, 0.6f)};
@@ -55,6 +56,7 @@ struct ViewerWindow::Impl {
   std::chrono::steady_clock::time_point last_frame = std::chrono::steady_clock::now();
   double fps = 0.0;
   std::optional<Stage> drawn_stage;  // the camera is refitted when the stage changes
+  std::optional<Pointer> injected;   // a scripted mouse for the next frame
 
   int scene_x() const { return kPanelWidth; }
   void sizes(int& w, int& h) const { glfwGetFramebufferSize(window, &w, &h); }
@@ -119,25 +121,36 @@ struct ViewerWindow::Impl {
     }
   }
 
-  void handle_mouse(ViewerSession& s, ViewSettings& v) {
+  // The mouse as GLFW and ImGui see it, in framebuffer pixels.
+  Pointer read_pointer() const {
     const ImGuiIO& io = ImGui::GetIO();
-    double mx, my;
-    glfwGetCursorPos(window, &mx, &my);
+    Pointer p;
+    glfwGetCursorPos(window, &p.x, &p.y);
     // Window coordinates to framebuffer pixels (equal unless the display scales).
     int fw, fh, ww, wh;
     glfwGetFramebufferSize(window, &fw, &fh);
     glfwGetWindowSize(window, &ww, &wh);
-    mx *= static_cast<double>(fw) / std::max(1, ww);
-    my *= static_cast<double>(fh) / std::max(1, wh);
+    p.x *= static_cast<double>(fw) / std::max(1, ww);
+    p.y *= static_cast<double>(fh) / std::max(1, wh);
+    p.down = {glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS,
+              glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS,
+              glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS};
+    p.wheel = io.MouseWheel;
+    p.shift = io.KeyShift;
+    p.over_panel = io.WantCaptureMouse;
+    return p;
+  }
+
+  void handle_mouse(ViewerSession& s, ViewSettings& v, const Pointer& ptr) {
+    const double mx = ptr.x, my = ptr.y;
     const double dx = mx - last_x, dy = my - last_y;
     last_x = mx;
     last_y = my;
-    if (io.WantCaptureMouse && !dragging) return;
-    if (!io.WantCaptureMouse && io.MouseWheel != 0.0f && !v.flat)
-      v.camera.zoom(std::pow(1.1, io.MouseWheel));
+    if (ptr.over_panel && !dragging) return;
+    if (!ptr.over_panel && ptr.wheel != 0.0 && !v.flat) v.camera.zoom(std::pow(1.1, ptr.wheel));
 
     for (int b : {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT, GLFW_MOUSE_BUTTON_MIDDLE}) {
-      const bool down = glfwGetMouseButton(window, b) == GLFW_PRESS;
+      const bool down = ptr.down[static_cast<size_t>(b)];
       if (down && !dragging && mx >= scene_x()) {
         dragging = true;
         drag_button = b;
@@ -168,7 +181,7 @@ struct ViewerWindow::Impl {
     sizes(w, h);
     if (v.flat) return;
     if (drag_button == GLFW_MOUSE_BUTTON_MIDDLE ||
-        (drag_button == GLFW_MOUSE_BUTTON_RIGHT && io.KeyShift))
+        (drag_button == GLFW_MOUSE_BUTTON_RIGHT && ptr.shift))
       v.camera.pan(dx, dy, h);
     else
       v.camera.orbit(-0.4 * dx, 0.4 * dy);
@@ -251,10 +264,9 @@ struct ViewerWindow::Impl {
     }
     if (ImGui::CollapsingHeader("Tools", ImGuiTreeNodeFlags_DefaultOpen)) {
       int t = static_cast<int>(tool);
-      const char* names[] = {"orbit", "paint", "erase", "cut", "hole", "pin"};
       for (int i = 0; i < 6; ++i) {
         if (i % 3) ImGui::SameLine();
-        ImGui::RadioButton(names[i], &t, i);
+        ImGui::RadioButton(kToolNames[i], &t, i);
       }
       tool = static_cast<Tool>(t);
       float brush = static_cast<float>(v.brush_radius / units::mm);
@@ -458,6 +470,23 @@ void ViewerWindow::set_scene_path(const std::string& path) {
   impl_->scene_path = path;
 }
 
+bool ViewerWindow::set_tool(const std::string& name) {
+  for (int i = 0; i < 6; ++i)
+    if (name == kToolNames[i]) {
+      impl_->tool = static_cast<Tool>(i);
+      return true;
+    }
+  return false;
+}
+
+void ViewerWindow::inject(const Pointer& pointer) {
+  impl_->injected = pointer;
+}
+
+void ViewerWindow::set_hole_radius(double metres) {
+  impl_->hole_radius = metres;
+}
+
 void ViewerWindow::frame(ViewerSession& session, ViewSettings& settings, bool simulate,
                          Image* capture) {
   Impl& r = *impl_;
@@ -465,7 +494,9 @@ void ViewerWindow::frame(ViewerSession& session, ViewSettings& settings, bool si
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
-  r.handle_mouse(session, settings);
+  const Pointer ptr = r.injected ? *r.injected : r.read_pointer();
+  r.injected.reset();
+  r.handle_mouse(session, settings, ptr);
   r.handle_keys(session, settings);
   if (simulate && settings.playing) {
     const SliceReport slice =

@@ -2,6 +2,7 @@
 // The viewer's window: GLFW + OpenGL 3.3 + Dear ImGui. It draws the session (3-D or 2-D view,
 // colours, springs, particles, legend), turns mouse and keys into session edits and camera
 // moves, and shows the control panel. The logic it calls lives in the view library.
+#include <array>
 #include <memory>
 #include <string>
 
@@ -10,6 +11,16 @@
 #include "membra/view/viewer_session.hpp"
 
 namespace membra::viewer {
+
+// The mouse in one frame: position in framebuffer pixels (origin top-left), buttons (left,
+// right, middle), wheel, Shift, and whether the panel has it.
+struct Pointer {
+  double x = 0.0, y = 0.0;
+  std::array<bool, 3> down{false, false, false};
+  double wheel = 0.0;
+  bool shift = false;
+  bool over_panel = false;
+};
 
 class ViewerWindow {
  public:
@@ -28,6 +39,12 @@ class ViewerWindow {
   const std::string& status() const;
   // Where the panel's Load/Save buttons point.
   void set_scene_path(const std::string& path);
+  // The editing tool (orbit, paint, erase, cut, hole, pin); false for an unknown name.
+  bool set_tool(const std::string& name);
+  // The hole tool's radius, m.
+  void set_hole_radius(double metres);
+  // Uses `pointer` instead of the real mouse in the next frame (scripts drive the same code).
+  void inject(const Pointer& pointer);
 
  private:
   struct Impl;

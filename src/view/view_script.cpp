@@ -45,6 +45,14 @@ const std::map<std::string, Spec>& specs() {
       {"fit", {"", "fit the camera to the sheet"}},
       {"springs", {"w", "springs on|off: draw the springs as lines", {"on", "off"}}},
       {"particles", {"w", "particles on|off", {"on", "off"}}},
+      {"tool",
+       {"w",
+        "tool orbit|paint|erase|cut|hole|pin: what the left mouse button does",
+        {"orbit", "paint", "erase", "cut", "hole", "pin"}}},
+      {"drag", {"nnnn", "drag X0 Y0 X1 Y1: the left button dragged (window pixels) with the tool"}},
+      {"click", {"nn", "click X Y: the left button clicked (window pixels) with the tool"}},
+      {"brush", {"n", "brush R: the brush radius, mm"}},
+      {"holesize", {"n", "holesize R: the hole tool's radius, mm"}},
       {"undo", {"", "undo the last edit"}},
       {"redo", {"", "redo it"}},
       {"reset", {"", "back to the flat sheet"}},
@@ -181,6 +189,9 @@ bool run_session_command(const ScriptCommand& c, ViewerSession& session, ViewSet
     v.show_springs.fill(c.words[0] == "on");
   } else if (n == "particles") {
     v.show_particles = c.words[0] == "on";
+  } else if (n == "brush") {
+    if (!(c.number(0) > 0.0)) check("the radius must be positive");
+    v.brush_radius = c.number(0) * units::mm;
   } else if (n == "undo") {
     if (!session.undo()) check("nothing to undo");
   } else if (n == "redo") {
@@ -189,7 +200,7 @@ bool run_session_command(const ScriptCommand& c, ViewerSession& session, ViewSet
     session.reset();
     v.camera_fitted = false;
   } else {
-    return false;  // screenshot, save, export, fps, quit: the window's
+    return false;  // screenshot, save, export, fps, quit, tool, drag, click: the window's
   }
   return true;
 }

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "test_util.hpp"
 
 namespace membra {
@@ -68,6 +70,58 @@ void expect_legend(const Png& p, const std::string& name) {
   EXPECT_TRUE(blue(p.at(x, static_cast<int>(0.84 * p.h)))) << name << ": no blue at its bottom";
 }
 
+// Runs `membra view SCENE --script SCRIPT` under Xvfb; returns the exit status and output.
+std::pair<int, std::string> run_viewer(const fs::path& scene, const fs::path& script) {
+  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(MEMBRA_CLI) +
+                          " view " + scene.string() + " --script " + script.string() +
+                          " --size 1000 700 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+TEST(ViewerScreenshot, TheMouseToolsPaintCutAndPin) {
+  const fs::path dir = unique_temp_dir();
+  fs::create_directories(dir);
+  {
+    std::ofstream scene(dir / "scene.json");
+    scene << R"({"name": "mouse", "sheet": {"size": [100, 100], "resolution": [17, 17]},
+                 "simulation": {"G": 0}})";
+    // In the 2-D view the stretched sheet spans about x 352..842, y 186..512 (1000 x 700).
+    std::ofstream script(dir / "script.txt");
+    script << "color pattern\nstretch\nview 2d\n"
+           << "screenshot " << (dir / "before.png").string() << "\n"
+           << "tool paint\nbrush 6\ndrag 450 350 750 350\n"
+           << "screenshot " << (dir / "painted.png").string() << "\n"
+           << "tool cut\ndrag 600 250 600 450\ntool pin\nclick 700 300\n"
+           << "save " << (dir / "saved.json").string() << "\nquit\n";
+  }
+  const auto [code, out] = run_viewer(dir / "scene.json", dir / "script.txt");
+  ASSERT_EQ(code, 0) << out;
+  const Png before = load(dir / "before.png"), painted = load(dir / "painted.png");
+  ASSERT_EQ(painted.w, 1000);
+  // The drag left a red band along y = 350 from x 450 to 750 where all was blue before (the
+  // frame's outline is red too, so only the band is looked at).
+  int band_before = 0, band = 0;
+  for (int x = 460; x <= 740; x += 10) {
+    band_before += red(before.at(x, 350)) ? 1 : 0;
+    band += red(painted.at(x, 350)) ? 1 : 0;
+  }
+  EXPECT_EQ(band_before, 0);
+  EXPECT_EQ(band, 29);
+  EXPECT_FALSE(red(painted.at(600, 250)));  // well off the stroke
+  // The cut and the pin went into the session's protocol.
+  nlohmann::json saved;
+  std::ifstream(dir / "saved.json") >> saved;
+  ASSERT_EQ(saved["protocol"].size(), 3u) << saved.dump();
+  EXPECT_EQ(saved["protocol"][1]["step"], "cut");
+  EXPECT_EQ(saved["protocol"][2]["step"], "load");
+  fs::remove_all(dir);
+}
+
 TEST(ViewerScreenshot, ScriptedViewerDrawsTheSheetItsColoursAndTheLegend) {
   const fs::path dir = unique_temp_dir();
   fs::create_directories(dir);
@@ -84,15 +138,8 @@ TEST(ViewerScreenshot, ScriptedViewerDrawsTheSheetItsColoursAndTheLegend) {
            << "screenshot " << (dir / "curvature.png").string() << "\n"
            << "save " << (dir / "saved.json").string() << "\nquit\n";
   }
-  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(MEMBRA_CLI) +
-                          " view " + (dir / "scene.json").string() + " --script " +
-                          (dir / "script.txt").string() + " --size 1000 700 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  const auto [code, out] = run_viewer(dir / "scene.json", dir / "script.txt");
+  ASSERT_EQ(code, 0) << out;
 
   const Png pattern = load(dir / "pattern.png");
   ASSERT_EQ(pattern.w, 1000) << "no screenshot";
