@@ -248,6 +248,8 @@ std::string ViewerSession::release() {
 
 std::string ViewerSession::paint(const Vec2& centre, double radius, bool erase) {
   if (!(radius > 0.0) || !centre.allFinite()) return "the brush needs a positive radius";
+  if (stage_ == Stage::flat)
+    return "stretch the sheet first: resin is painted on the stretched sheet (frame coordinates)";
   if (stage_ == Stage::released || stage_ == Stage::impregnated)
     return "paint resin on the sheet before impregnating it (undo or reset to go back)";
   push_undo();

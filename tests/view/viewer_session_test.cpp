@@ -36,6 +36,7 @@ TEST(ViewerSession, TheProtocolButtonsGoInOrder) {
   EXPECT_EQ(s.stage(), Stage::flat);
   EXPECT_NE(s.impregnate(), "");  // nothing stretched yet
   EXPECT_NE(s.release(), "");
+  EXPECT_NE(s.paint(mm(50, 50), 5 * units::mm), "");  // paint goes on the stretched sheet
   ASSERT_EQ(s.stretch(), "");
   EXPECT_EQ(s.stage(), Stage::stretched);
   EXPECT_NE(s.stretch(), "");  // once

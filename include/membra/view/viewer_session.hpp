@@ -77,8 +77,8 @@ class ViewerSession {
   // Carries out the scene's own protocol, one step each time the sheet has settled.
   void play_scene_protocol();
 
-  // Editing (frame coordinates, m). Paint and erase only before impregnation; cuts, holes and
-  // pins at any stage. Each returns "" or why not (nothing changes then).
+  // Editing (frame coordinates, m). Paint and erase on the stretched sheet before impregnation;
+  // cuts, holes and pins at any stage. Each returns "" or why not (nothing changes then).
   std::string paint(const Vec2& centre, double radius, bool erase = false);
   std::string cut(const Vec2& a, const Vec2& b);
   std::string hole(const Vec2& centre, double radius);
