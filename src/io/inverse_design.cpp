@@ -98,8 +98,12 @@ DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
     const JsonObject f = top.object("frame", {"size", "lambda"});
     s.frame = f.number("size", 200.0, Bounds::positive()) * units::mm;
     if (f.has("lambda")) {
-      const auto l = f.numbers("lambda", 2, Bounds{1.0, 10.0, true});
+      const auto l = f.numbers("lambda", 2, Bounds{1.0, 10.0, false});
       s.lambda = Vec2(l[0], l[1]);
+      if (!(s.lambda.prod() > 1.0))
+        throw InputError(f.pointer("lambda"),
+                         "at least one direction must be stretched (lambda > 1): without "
+                         "pre-stretch resin changes nothing");
     }
   }
   if (top.has("sheet")) {
@@ -167,12 +171,16 @@ json design_scene(const DesignSpec& spec, const Stencil& stencil) {
   const bool disk = spec.target.kind == "cap";
   const double wx = spec.frame / spec.lambda.x() / units::mm,
                wy = spec.frame / spec.lambda.y() / units::mm;
+  // `resolution` particles along the shorter side, square cells (as many as fit) along the other.
+  const int n = spec.resolution;
+  const int nx = wx <= wy ? n : static_cast<int>(std::lround((n - 1) * wx / wy)) + 1;
+  const int ny = wy <= wx ? n : static_cast<int>(std::lround((n - 1) * wy / wx)) + 1;
   json scene = {
       {"name", spec.name},
       {"description", "Stencil designed by `membra design` for a " + spec.target.kind + " target"},
       {"sheet",
        {{"size", {wx, wy}},
-        {"resolution", {spec.resolution, spec.resolution}},
+        {"resolution", {nx, ny}},
         {"material", spec.material},
         {"outline", disk ? "disk" : "rectangle"}}},
       {"simulation", {{"solver", spec.solver}, {"G", 0.0}, {"tolerance", spec.tolerance}}},

@@ -96,6 +96,13 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   j = small_design({{"cap", {{"diameter", 100}, {"height", 20}}}});
   j["frame"]["lambda"] = {0.5, 1.5};
   EXPECT_NE(error_of(j).find("/frame/lambda"), std::string::npos);
+  j["frame"]["lambda"] = {1.0, 1.0};  // nothing stretched: resin would change nothing
+  EXPECT_NE(error_of(j).find("/frame/lambda"), std::string::npos);
+  // A uniaxial stretch is fine; the sheet is then 133 x 200 mm, with square cells.
+  j["frame"]["lambda"] = {1.5, 1.0};
+  const json scene = design_scene(parse_design(j), Stencil{});
+  EXPECT_EQ(scene["sheet"]["resolution"], json({11, 16}));
+  EXPECT_NO_THROW(parse_scene(scene));
   j = small_design({{"cap", {{"diameter", 100}, {"height", 20}}}});
   j["resin"]["material"] = "unobtainium";
   EXPECT_NE(error_of(j).find("material"), std::string::npos);
