@@ -516,17 +516,9 @@ void ViewerWindow::frame(ViewerSession& session, ViewSettings& settings, bool si
   Image button_shot;
   if (!capture && r.screenshot_pending) capture = &button_shot;
   if (capture) {
-    // The back buffer, before it is shown; OpenGL's rows start at the bottom.
-    std::vector<std::uint8_t> rgba(static_cast<size_t>(w) * h * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    // The back buffer, before it is shown.
     glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    *capture = Image{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 3)};
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        for (int c = 0; c < 3; ++c)
-          capture->rgb[(static_cast<size_t>(y) * w + x) * 3 + c] =
-              rgba[(static_cast<size_t>(h - 1 - y) * w + x) * 4 + c];
+    *capture = read_pixels(w, h);
   }
   if (r.screenshot_pending) {
     r.screenshot_pending = false;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -149,15 +148,7 @@ DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
 
 DesignSpec load_design(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::ifstream in(file);
-  if (!in)
-    throw InputError(name, "cannot open the design file (does it exist and is it readable?)");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw InputError(name, std::string("malformed JSON: ") + e.what());
-  }
+  const json j = read_json_file(file, "design");
   try {
     DesignSpec s = parse_design(j, file.parent_path());
     s.file = file;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 namespace membra {
@@ -115,6 +116,18 @@ std::vector<double> JsonObject::numbers(std::string_view key, size_t count, Boun
 
 JsonObject JsonObject::object(std::string_view key, std::vector<std::string_view> known) const {
   return JsonObject(at(key), pointer(key), std::move(known));
+}
+
+nlohmann::json read_json_file(const std::filesystem::path& file, const std::string& what) {
+  const std::string name = file.string();
+  std::ifstream in(file);
+  if (!in)
+    throw InputError(name, "cannot open the " + what + " file (does it exist and is it readable?)");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(name, std::string("malformed JSON: ") + e.what());
+  }
 }
 
 }  // namespace membra

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -530,14 +529,7 @@ void apply_override(json& scene, const std::string& assignment) {
 
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   const std::string name = file.string();
-  std::ifstream in(file);
-  if (!in) throw InputError(name, "cannot open the scene file (does it exist and is it readable?)");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw InputError(name, std::string("malformed JSON: ") + e.what());
-  }
+  json j = read_json_file(file, "scene");
   try {
     for (const auto& o : overrides) apply_override(j, o);
   } catch (const InputError& e) {

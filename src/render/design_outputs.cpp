@@ -10,8 +10,14 @@
 
 namespace membra {
 
-nlohmann::json make_design_report(const DesignResult& d) {
-  const Scene scene = parse_scene(d.scene, d.spec.file.parent_path());
+namespace {
+
+// The best stencil's scene, as run_design ran it.
+Scene design_result_scene(const DesignResult& d) {
+  return parse_scene(d.scene, d.spec.file.parent_path());
+}
+
+nlohmann::json design_report(const DesignResult& d, const Scene& scene) {
   nlohmann::json report = make_report(scene, d.run);
   auto params = [](const DensityParameters& p) {
     return nlohmann::json{{"mean", p.mean}, {"radial", p.radial}, {"anisotropy", p.anisotropy}};
@@ -51,12 +57,18 @@ nlohmann::json make_design_report(const DesignResult& d) {
   return report;
 }
 
+}  // namespace
+
+nlohmann::json make_design_report(const DesignResult& d) {
+  return design_report(d, design_result_scene(d));
+}
+
 std::string stage_design_outputs(const DesignResult& d, OutputSet& out) {
   out.add("scene.json", [&](std::ostream& os) { os << d.scene.dump(2) << '\n'; });
   out.add("target.obj", [&](std::ostream& os) { write_obj(os, d.target.x, d.target.triangles); });
-  const nlohmann::json report = make_design_report(d);
+  const Scene scene = design_result_scene(d);
+  const nlohmann::json report = design_report(d, scene);
   out.add("report.json", [report](std::ostream& os) { os << report.dump(2) << '\n'; });
-  const Scene scene = parse_scene(d.scene, d.spec.file.parent_path());
   std::string note = stage_run_outputs(scene, d.run, {}, out);
   if (!note.empty()) return note;
   try {

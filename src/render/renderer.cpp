@@ -118,16 +118,19 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
   glDisable(GL_DEPTH_TEST);
   if (legend) r.painter->legend(*legend, r.width, r.height);
 
-  Image img{r.width, r.height,
-            std::vector<std::uint8_t>(static_cast<size_t>(r.width) * r.height * 3)};
-  std::vector<std::uint8_t> rgba(static_cast<size_t>(r.width) * r.height * 4);
+  return read_pixels(r.width, r.height);
+}
+
+Image read_pixels(int width, int height) {
+  Image img{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 3)};
+  std::vector<std::uint8_t> rgba(static_cast<size_t>(width) * height * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  for (int yy = 0; yy < r.height; ++yy)  // OpenGL rows start at the bottom
-    for (int xx = 0; xx < r.width; ++xx)
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  for (int yy = 0; yy < height; ++yy)  // OpenGL rows start at the bottom
+    for (int xx = 0; xx < width; ++xx)
       for (int c = 0; c < 3; ++c)
-        img.rgb[(static_cast<size_t>(yy) * r.width + xx) * 3 + c] =
-            rgba[(static_cast<size_t>(r.height - 1 - yy) * r.width + xx) * 4 + c];
+        img.rgb[(static_cast<size_t>(yy) * width + xx) * 3 + c] =
+            rgba[(static_cast<size_t>(height - 1 - yy) * width + xx) * 4 + c];
   return img;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Typed, range-checked reads from a JSON object that reject unknown keys. Every error is an
 // InputError naming the JSON pointer of the offending value.
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <string>
@@ -58,5 +59,8 @@ double checked_number(const nlohmann::json& v, const std::string& pointer, Bound
 std::vector<std::string> to_strings(const std::vector<std::string_view>& keys);
 // The JSON type name of a value, for messages ("string", "array", ...).
 std::string json_type_name(const nlohmann::json& v);
+// Reads and parses a JSON file. Throws InputError naming the file when it cannot be opened
+// ("cannot open the <what> file ...") or is malformed (with line and column).
+nlohmann::json read_json_file(const std::filesystem::path& file, const std::string& what);
 
 }  // namespace membra

@@ -55,6 +55,10 @@ class Renderer {
   std::unique_ptr<Impl> impl_;
 };
 
+// The framebuffer currently bound for reading (width x height, from its lower-left corner) as
+// an image with rows from the top. Needs a current OpenGL context.
+Image read_pixels(int width, int height);
+
 // The pattern seen from above on its frame (m): resin black on white with a red frame line,
 // `pixels_per_mm` pixels per mm (CPU, no OpenGL needed).
 Image draw_pattern(const Pattern& pattern, const Box2& frame, double pixels_per_mm);
