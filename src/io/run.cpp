@@ -182,7 +182,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
         ok = record({"stretch", solve(scene, r.prepared, s, "stretch", progress), 0});
         break;
       case ProtocolStep::Kind::impregnate: {
-        const int n = impregnate(mem, *step.pattern, step.resin, step.resin_side);
+        const int n = impregnate(mem, *step.pattern, step.resin, step.resin_side, step.bilayer);
         if (n == 0)
           throw InputError(step.pointer + "/pattern",
                            "the pattern covers no spring of the sheet (is it between grid nodes, "

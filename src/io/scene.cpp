@@ -26,7 +26,8 @@ const std::vector<std::string_view> kCameraKeys = {"azimuth", "elevation"};
 const std::vector<std::string_view> kSheetKeys = {"size",    "resolution", "material",
                                                   "springs", "bending",    "outline"};
 const std::vector<std::string_view> kStretchKeys = {"step", "lambda", "hold"};
-const std::vector<std::string_view> kImpregnateKeys = {"step", "pattern", "material", "resin_side"};
+const std::vector<std::string_view> kImpregnateKeys = {"step", "pattern", "material", "resin_side",
+                                                       "bilayer"};
 const std::vector<std::string_view> kReleaseKeys = {"step", "increments", "perturbation", "seed"};
 const std::vector<std::string_view> kLoadKeys = {"step", "gravity", "pins"};
 const std::vector<std::string_view> kGrowKeys = {"step",       "factor",       "family",
@@ -357,6 +358,12 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
         throw InputError(o.pointer("material"), "unknown material '" + mat + "'");
       step.resin = it->second;
       step.resin_side = o.string("resin_side", "top", {"top", "bottom"}) == "top" ? 1 : -1;
+      step.bilayer = o.boolean("bilayer", false);
+      // The hinges carry only the linear part of the plate energy; the bending elements the
+      // quadratic one that stops the curl.
+      if (step.bilayer && !scene.sheet.bending)
+        throw InputError(o.pointer("bilayer"),
+                         "a bilayer needs the sheet's bending (sheet.bending is false)");
     } else if (kind == "release") {
       const JsonObject o(arr[i], ptr, kReleaseKeys);
       step.kind = ProtocolStep::Kind::release;

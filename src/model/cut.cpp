@@ -61,6 +61,19 @@ void filter_bending(Membrane& m, const std::vector<bool>& keep) {
   m.bending_fraction = std::move(fraction);
 }
 
+void filter_hinges(Membrane& m, const std::vector<bool>& keep) {
+  Hinges& h = m.sheet.model.hinges;
+  Hinges out;
+  std::vector<double> full;
+  for (int e = 0; e < h.size(); ++e) {
+    if (!keep[e]) continue;
+    out.add(h.v[e], h.moment[e]);
+    full.push_back(m.hinge_full_moment[e]);
+  }
+  h = std::move(out);
+  m.hinge_full_moment = std::move(full);
+}
+
 using SpringKey = std::tuple<int, int, SpringFamily>;
 using BendKey = std::array<int, 3>;
 using TriKey = std::array<int, 3>;
@@ -112,6 +125,19 @@ int cut_along(Membrane& m, const std::vector<Vec2>& line, std::vector<Vec2>* whe
     keep_bend[e] = !crosses_polyline(xy(b.v[e][0]), xy(b.v[e][1]), line) &&
                    !crosses_polyline(xy(b.v[e][1]), xy(b.v[e][2]), line);
   filter_bending(m, keep_bend);
+
+  // A hinge goes when its edge or either of its triangles is cut.
+  const Hinges& h = m.sheet.model.hinges;
+  std::vector<bool> keep_hinge(h.size(), true);
+  for (int e = 0; e < h.size(); ++e) {
+    const auto& v = h.v[e];
+    bool cut = crosses_polyline(xy(v[0]), xy(v[1]), line);
+    for (int o : {v[2], v[3]})
+      cut =
+          cut || crosses_polyline(xy(v[0]), xy(o), line) || crosses_polyline(xy(v[1]), xy(o), line);
+    keep_hinge[e] = !cut;
+  }
+  filter_hinges(m, keep_hinge);
 
   auto& tris = m.sheet.triangles;
   std::erase_if(tris, [&](const Triangle& t) {
@@ -227,6 +253,22 @@ int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
   for (const Triangle& t : m.sheet.triangles) old_tri[tri_key(g, t)] = true;
   std::erase_if(n.sheet.triangles,
                 [&](const Triangle& t) { return !old_tri.contains(tri_key(ng, t)); });
+  // Hinges whose four particles and two triangles survive, with their moments.
+  std::map<TriKey, bool> new_tri;
+  for (const Triangle& t : n.sheet.triangles) new_tri[tri_key(ng, t)] = true;
+  for (int e = 0; e < old.hinges.size(); ++e) {
+    std::array<int, 4> v;
+    bool alive = true;
+    for (int k = 0; k < 4; ++k) {
+      v[static_cast<size_t>(k)] = new_of_old[old.hinges.v[e][static_cast<size_t>(k)]];
+      alive = alive && v[static_cast<size_t>(k)] >= 0;
+    }
+    alive = alive && new_tri.contains(tri_key(ng, Triangle(v[0], v[1], v[2]))) &&
+            new_tri.contains(tri_key(ng, Triangle(v[1], v[0], v[3])));
+    if (!alive) continue;
+    nm.hinges.add(v, old.hinges.moment[e]);
+    n.hinge_full_moment.push_back(m.hinge_full_moment[e]);
+  }
 
   for (int s = 0; s < ns.size(); ++s) update_spring(n, s);
 

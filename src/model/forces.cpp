@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "membra/model/bend_kernel.hpp"
+#include "membra/model/hinge_kernel.hpp"
 #include "membra/model/spring_kernel.hpp"
 
 namespace membra {
@@ -33,11 +34,22 @@ void add_bending_forces(const Model& model, const Points& x, int begin, int end,
   }
 }
 
-// Springs and bending. Large sheets split the elements into a fixed number of chunks, each
+void add_hinge_forces(const Model& model, const Points& x, int begin, int end, Points& f) {
+  const Hinges& h = model.hinges;
+  for (int i = begin; i < end; ++i) {
+    const double m = h.moment[i];
+    if (m == 0.0) continue;
+    const auto& v = h.v[i];
+    const HingeEval e = hinge_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), x.col(v[3]));
+    for (int k = 0; k < 4; ++k) f.col(v[k]) -= m * e.grad[k];
+  }
+}
+
+// Springs, bending and hinges. Large sheets split the elements into a fixed number of chunks, each
 // summed into its own buffer, the buffers added in chunk order: the result is the same bit for
 // bit whatever the number of threads (and whichever thread takes which chunk).
 void add_elastic_forces(const Model& model, const Points& x, const Points* v, Points& f) {
-  const int ns = model.springs.size(), nb = model.bending.size();
+  const int ns = model.springs.size(), nb = model.bending.size(), nh = model.hinges.size();
   constexpr int kParallelParticles = 2000;  // below this, threads cost more than they save
   constexpr int kChunks = 4;
   if (model.num_particles() >= kParallelParticles) {
@@ -51,12 +63,14 @@ void add_elastic_forces(const Model& model, const Points& x, const Points* v, Po
       fc.setZero(3, x.cols());
       add_spring_forces(model, x, v, ns * c / kChunks, ns * (c + 1) / kChunks, fc);
       add_bending_forces(model, x, nb * c / kChunks, nb * (c + 1) / kChunks, fc);
+      add_hinge_forces(model, x, nh * c / kChunks, nh * (c + 1) / kChunks, fc);
     }
     for (const Points& fc : partial) f += fc;
     return;
   }
   add_spring_forces(model, x, v, 0, ns, f);
   add_bending_forces(model, x, 0, nb, f);
+  add_hinge_forces(model, x, 0, nh, f);
 }
 
 void add_gravity(const Model& model, Points& f) {
@@ -100,6 +114,17 @@ double bending_energy(const Model& model, const Points& x) {
   return e;
 }
 
+double hinge_energy(const Model& model, const Points& x) {
+  const Hinges& h = model.hinges;
+  double e = 0.0;
+  for (int i = 0; i < h.size(); ++i) {
+    if (h.moment[i] == 0.0) continue;
+    const auto& v = h.v[i];
+    e += h.moment[i] * hinge_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), x.col(v[3])).theta;
+  }
+  return e;
+}
+
 double gravity_energy(const Model& model, const Points& x) {
   double e = 0.0;
   for (int p = 0; p < model.num_particles(); ++p) e -= model.mass[p] * model.gravity.dot(x.col(p));
@@ -107,7 +132,8 @@ double gravity_energy(const Model& model, const Points& x) {
 }
 
 double potential_energy(const Model& model, const Points& x) {
-  return elastic_energy(model, x) + bending_energy(model, x) + gravity_energy(model, x);
+  return elastic_energy(model, x) + bending_energy(model, x) + hinge_energy(model, x) +
+         gravity_energy(model, x);
 }
 
 double kinetic_energy(const Model& model, const Points& v) {

@@ -6,6 +6,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "membra/model/bilayer.hpp"
+
 namespace membra {
 
 Membrane make_membrane(Sheet sheet) {
@@ -70,7 +72,7 @@ void update_spring(Membrane& m, int s) {
   sp.rest_length[s] = (1.0 - f) * latex_rest + f * rest_in;
 }
 
-int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side) {
+int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side, bool bilayer) {
   Model& model = m.sheet.model;
   const Points& x = m.state.x;
   const LatticeStiffness kr = homogenize(
@@ -95,6 +97,8 @@ int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int s
   }
   Bending& b = model.bending;
   const double d_resin = bending_stiffness(resin);
+  const GridSheet& g = m.sheet.grid;
+  const double hx_now = g.hx() * m.stretch.x(), hy_now = g.hy() * m.stretch.y();
   for (int e = 0; e < b.size(); ++e) {
     const auto& v = b.v[e];
     const double f =
@@ -102,11 +106,18 @@ int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int s
                fraction_inside(pattern, x.col(v[1]).head<2>(), x.col(v[2]).head<2>(), 8));
     if (f <= 0.0) continue;
     m.bending_fraction[e] = std::max(m.bending_fraction[e], f);
-    m.resin_bending[e] = b.factor[e] * d_resin;
+    // The resin plate forms in the stretched sheet, whose cells are hx' x hy': its elements
+    // take the plate weights of those cells.
+    const Vec3 span = model.reference.col(v[2]) - model.reference.col(v[0]);
+    const auto [ni, nj] = g.node(v[1]);
+    const int di = span.x() > 0 ? 1 : span.x() < 0 ? -1 : 0;
+    const int dj = span.y() > 0 ? 1 : span.y() < 0 ? -1 : 0;
+    m.resin_bending[e] = d_resin * bending_factor(g, ni, nj, di, dj, hx_now, hy_now);
     const double cl = m.latex_bending[e], fe = m.bending_fraction[e];
     b.stiffness[e] = 1.0 / ((1.0 - fe) / cl + fe / (cl + m.resin_bending[e]));
   }
   m.resin_side = side >= 0 ? 1 : -1;
+  if (bilayer) add_bilayer_hinges(m, pattern, resin, m.resin_side);
   return count;
 }
 
@@ -124,6 +135,7 @@ void begin_release(Membrane& m) {
 void set_release_level(Membrane& m, double level) {
   m.release_level = std::clamp(level, 0.0, 1.0);
   for (int s = 0; s < m.sheet.model.springs.size(); ++s) update_spring(m, s);
+  update_hinge_moments(m);
 }
 
 void perturb(Membrane& m, double amplitude, std::uint64_t seed) {

@@ -25,6 +25,8 @@ int cells_around(const GridSheet& g, int i, int j) {
          g.cell_active(i, j);
 }
 
+constexpr int kBendDirections[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+
 void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const LatticeStiffness& k,
                          Model& m) {
   // Tributary width: the spacing between parallel springs of the family (h for grid lines, h/sqrt2
@@ -70,23 +72,37 @@ void add_lattice_springs(const GridSheet& g, const SheetOptions& o, const Lattic
 
 // Elements centred on every node with both neighbours present, along x, y and both diagonals.
 void add_bending_elements(const GridSheet& g, double d, Bending& out) {
-  constexpr int dirs[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
   for (int j = 0; j < g.ny(); ++j)
     for (int i = 0; i < g.nx(); ++i) {
       const int p = g.particle(i, j);
       if (p < 0) continue;
-      for (const auto& dir : dirs) {
+      for (const auto& dir : kBendDirections) {
         const int a = g.particle(i - dir[0], j - dir[1]), b = g.particle(i + dir[0], j + dir[1]);
         if (a < 0 || b < 0) continue;
-        // c = D/3 (axes) or D/6 (diagonals) per node area; a boundary node has less area.
-        const double factor =
-            ((dir[0] != 0 && dir[1] != 0) ? 1.0 / 6.0 : 1.0 / 3.0) * 0.25 * cells_around(g, i, j);
+        const double factor = bending_factor(g, i, j, dir[0], dir[1], g.hx(), g.hy());
         out.add(a, p, b, factor * d, factor);
       }
     }
 }
 
 }  // namespace
+
+double bending_factor(const GridSheet& g, int i, int j, int di, int dj, double hx, double hy) {
+  auto present = [&](int dx, int dy) {
+    return g.particle(i - dx, j - dy) >= 0 && g.particle(i + dx, j + dy) >= 0;
+  };
+  if (g.particle(i, j) < 0 || !present(di, dj)) return 0.0;
+  const PlateWeights w = plate_bending_weights(hx, hy);
+  const double area = 0.25 * cells_around(g, i, j);  // a boundary node has less area
+  if (di != 0 && dj != 0) return w.diagonal * area;
+  // A missing diagonal (a node on an edge) hands its share of the curvature along this axis to
+  // the axis element, so the edge bends like the plate with no curvature across it.
+  const double l2 = hx * hx + hy * hy;
+  double weight = di != 0 ? w.x : w.y;
+  for (int s : {1, -1})
+    if (!present(1, s)) weight += w.diagonal * (di != 0 ? hx * hx : hy * hy) / l2;
+  return weight * area;
+}
 
 Sheet build_sheet(const GridSpec& spec, const SheetOptions& o, const NodeMask& keep) {
   const Material& mat = o.material;

@@ -13,6 +13,7 @@
 
 #include "membra/model/bend_kernel.hpp"
 #include "membra/model/forces.hpp"
+#include "membra/model/hinge_kernel.hpp"
 
 namespace membra {
 namespace {
@@ -56,6 +57,11 @@ class HessianAssembler {
       visit(std::array<int, 3>{b.v[e][0], b.v[e][1], b.v[e][2]}, [&](int dr, int dc) {
         if (dr >= 0 && dc >= 0) t.emplace_back(dr, dc, 0.0);
       });
+    const Hinges& h = model.hinges;
+    for (int e = 0; e < h.size(); ++e)
+      visit(h.v[e], [&](int dr, int dc) {
+        if (dr >= 0 && dc >= 0) t.emplace_back(dr, dc, 0.0);
+      });
     for (int k = 0; k < ndof; ++k) t.emplace_back(k, k, 0.0);  // room for the shift
     h_.resize(ndof, ndof);
     h_.setFromTriplets(t.begin(), t.end());
@@ -72,6 +78,8 @@ class HessianAssembler {
     for (int e = 0; e < b.size(); ++e)
       visit(std::array<int, 3>{b.v[e][0], b.v[e][1], b.v[e][2]},
             [&](int dr, int dc) { bend_slots_.push_back(index(dr, dc)); });
+    for (int e = 0; e < h.size(); ++e)
+      visit(h.v[e], [&](int dr, int dc) { hinge_slots_.push_back(index(dr, dc)); });
     for (int k = 0; k < ndof; ++k) diag_slots_.push_back(index(k, k));
   }
 
@@ -117,6 +125,27 @@ class HessianAssembler {
         for (int c = 0; c < 9; ++c, ++slot)
           if (*slot >= 0) val[*slot] += 0.5 * (hb(r, c) + hb(c, r));
     }
+    const Hinges& h = model_.hinges;
+    for (int e = 0; e < h.size(); ++e) {
+      const auto& v = h.v[e];
+      const double step = 1e-6 * (x.col(v[1]) - x.col(v[0])).norm();
+      if (h.moment[e] == 0.0 || !(step > 0.0)) continue;
+      const std::array<Vec3, 4> p = {x.col(v[0]), x.col(v[1]), x.col(v[2]), x.col(v[3])};
+      Eigen::Matrix<double, 12, 12> hh;
+      for (int c = 0; c < 12; ++c) {
+        auto pp = p, pm = p;
+        pp[c / 3][c % 3] += step;
+        pm[c / 3][c % 3] -= step;
+        const HingeEval ep = hinge_eval(pp[0], pp[1], pp[2], pp[3]);
+        const HingeEval em = hinge_eval(pm[0], pm[1], pm[2], pm[3]);
+        for (int r = 0; r < 12; ++r)
+          hh(r, c) = h.moment[e] * (ep.grad[r / 3][r % 3] - em.grad[r / 3][r % 3]) / (2 * step);
+      }
+      const int* slot = &hinge_slots_[static_cast<size_t>(e) * 144];
+      for (int r = 0; r < 12; ++r)
+        for (int c = 0; c < 12; ++c, ++slot)
+          if (*slot >= 0) val[*slot] += 0.5 * (hh(r, c) + hh(c, r));
+    }
     for (int k : diag_slots_) val[k] += mu;
     return h_;
   }
@@ -133,7 +162,7 @@ class HessianAssembler {
  private:
   const Model& model_;
   Eigen::SparseMatrix<double> h_;
-  std::vector<int> spring_slots_, bend_slots_, diag_slots_;
+  std::vector<int> spring_slots_, bend_slots_, hinge_slots_, diag_slots_;
 };
 
 // Six coordinates (3 p + axis) fixing translation and rotation: all of particle a, y and z of b,

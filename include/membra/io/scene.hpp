@@ -67,6 +67,7 @@ struct ProtocolStep {
   nlohmann::json pattern_json;  // as written, for stencil export
   Material resin;
   int resin_side = +1;  // +1 top, -1 bottom
+  bool bilayer = false;  // resin on that face only: the composite curls on release
   // release, grow, add_springs
   int increments = 10;           // static solver: steps of the quasi-static path
   double perturbation = 0.2e-3;  // m, symmetry-breaking bump

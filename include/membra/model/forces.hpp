@@ -17,10 +17,12 @@ void compute_static_forces(const Model& model, const Points& x, Points& f);
 double elastic_energy(const Model& model, const Points& x);
 // Bending energy of all bending elements (J).
 double bending_energy(const Model& model, const Points& x);
+// Energy of the bilayer hinges, sum moment * theta (J; hinges.hpp).
+double hinge_energy(const Model& model, const Points& x);
 // Gravitational potential energy sum m (-g . x) (J), zero at x = 0.
 double gravity_energy(const Model& model, const Points& x);
-// Potential energy: elastic + bending + gravitational (J). Its negative gradient is the static
-// force.
+// Potential energy: elastic + bending + hinge + gravitational (J). Its negative gradient is the
+// static force.
 double potential_energy(const Model& model, const Points& x);
 // Kinetic energy of the free particles (J).
 double kinetic_energy(const Model& model, const Points& v);

@@ -26,6 +26,8 @@ struct Membrane {
   std::vector<double> latex_bending;     // c of the latex alone, J
   std::vector<double> resin_bending;     // c of the resin alone, J
   std::vector<double> bending_fraction;  // share inside resin
+  // Per hinge (sheet.model.hinges): the bilayer moment once the release is complete, J/rad.
+  std::vector<double> hinge_full_moment;
 
   std::vector<int> frame;      // particles the frame holds (empty once released)
   Vec2 stretch{1.0, 1.0};      // frame stretch ratios applied so far
@@ -50,13 +52,16 @@ int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges = {});
 // impregnate: springs and bending elements inside `pattern` (frame coordinates, evaluated at
 // the current positions) become a latex-resin composite whose resin part is at rest at its
 // current length. Returns the number of springs that received resin. `side` is +1 (top) or -1.
-int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side);
+// With `bilayer`, the resin also sits on that face only and the composite curls on release
+// (bilayer.hpp); without it, the resin soaks the whole thickness and only shortens in plane.
+int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side,
+               bool bilayer = false);
 
 // release (start): the frame lets go. Latex rest lengths are set to the current lengths
 // (release_level 1), so the sheet starts in equilibrium; lowering the level to 0 then returns
 // the latex to its natural length gradually (a path, see docs/process.md).
 void begin_release(Membrane& m);
-// Sets the release level in [0, 1] and updates rest lengths and stiffnesses.
+// Sets the release level in [0, 1] and updates rest lengths, stiffnesses and hinge moments.
 void set_release_level(Membrane& m, double level);
 
 // Deterministic out-of-plane perturbation that breaks the symmetry of a flat sheet: a smooth

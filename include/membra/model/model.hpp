@@ -6,6 +6,7 @@
 
 #include "membra/geometry/vec.hpp"
 #include "membra/model/bending.hpp"
+#include "membra/model/hinges.hpp"
 #include "membra/model/springs.hpp"
 
 namespace membra {
@@ -15,6 +16,7 @@ struct Model {
   std::vector<double> inv_mass;  // 1/kg; 0 means pinned
   Springs springs;
   Bending bending;                // bending elements; empty when the sheet has none
+  Hinges hinges;                  // bilayer moments; empty unless resin was applied as a bilayer
   Points reference;               // paper position of each particle in the flat natural sheet, m
   Vec3 gravity = Vec3::Zero();    // acceleration, m/s^2
   double velocity_damping = 0.0;  // D, 1/s: every particle feels -D m v

@@ -31,6 +31,11 @@ struct Sheet {
   SheetOptions options;        // how it was built (to rebuild it when holes remove nodes)
 };
 
+// c / D of the bending element centred on node (i, j) along grid direction (di, dj), for cells
+// of hx x hy (the grid's own, or the stretched ones where resin sets): the plate weights
+// (bending.hpp) times the node's area, 0 where the element does not exist.
+double bending_factor(const GridSheet& g, int i, int j, int di, int dj, double hx, double hy);
+
 // Builds the sheet: lumped masses (area x thickness x density, a quarter of each active cell to
 // each of its corners), the chosen spring families at rest in the flat grid, bending elements
 // (unless switched off), no pins, no gravity. Nodes the mask removes, and nodes left in no active

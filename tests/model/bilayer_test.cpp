@@ -1,0 +1,139 @@
+// Bilayer: the hinge kernel, Timoshenko's curvature, the hinges' moments against the plate
+// energy's linear term, and a released strip that curls to the predicted curvature.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "membra/model/bilayer.hpp"
+#include "membra/model/forces.hpp"
+#include "membra/model/hinge_kernel.hpp"
+#include "membra/solve/newton_solver.hpp"
+
+namespace membra {
+namespace {
+
+TEST(HingeKernel, GradientMatchesFiniteDifferences) {
+  const std::array<Vec3, 4> x = {Vec3(0, 0, 0), Vec3(1.0, 0.1, 0.05), Vec3(0.4, 0.9, 0.3),
+                                 Vec3(0.6, -0.8, 0.2)};
+  const HingeEval e = hinge_eval(x[0], x[1], x[2], x[3]);
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d) {
+      auto xp = x, xm = x;
+      const double h = 1e-6;
+      xp[i][d] += h;
+      xm[i][d] -= h;
+      const double fd = (hinge_eval(xp[0], xp[1], xp[2], xp[3]).theta -
+                         hinge_eval(xm[0], xm[1], xm[2], xm[3]).theta) /
+                        (2 * h);
+      EXPECT_NEAR(fd, e.grad[i][d], 1e-7) << i << "," << d;
+    }
+}
+
+TEST(HingeKernel, AngleIsPositiveForAValleyAndNegativeForARidge) {
+  // Edge along x; the left triangle rises by slope s with y, the right one too on its side.
+  for (double phi : {0.1, 0.7, 1.5}) {
+    const double s = std::tan(phi / 2);
+    const Vec3 x0(0, 0, 0), x1(1, 0, 0), up(0.5, 1, s), down(0.5, -1, s);
+    EXPECT_NEAR(hinge_eval(x0, x1, up, down).theta, phi, 1e-12);  // valley: a bowl towards +z
+    const Vec3 up2(0.5, 1, -s), down2(0.5, -1, -s);
+    EXPECT_NEAR(hinge_eval(x0, x1, up2, down2).theta, -phi, 1e-12);  // ridge: a dome
+  }
+  EXPECT_EQ(hinge_eval(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1, 0), Vec3(0.5, -1, 0)).theta, 0);
+}
+
+TEST(Bilayer, TimoshenkoMatchesItsClassicalLimits) {
+  const Material base{"base", 2e6, 1e-3, 1000};
+  // Equal layers: kappa = 3 eps / (2 h).
+  EXPECT_NEAR(bilayer_curvature_per_strain(base, base), 1.5 / 2e-3, 1e-9);
+  // A thin film (Stoney): kappa = 6 E_f t_f eps / (E_s t_s^2).
+  Material film{"film", 5e6, 1e-7, 1000};
+  EXPECT_NEAR(bilayer_curvature_per_strain(base, film) / (6 * 5e6 * 1e-7 / (2e6 * 1e-6)), 1.0,
+              1e-3);
+  // Latex with epoxy of the same thickness: about 4.7 1/m at the 1/3 misfit of lambda 1.5.
+  EXPECT_NEAR(bilayer_curvature_per_strain(latex(), epoxy()) / 3.0, 4.76, 0.01);
+  film.thickness = 0;
+  EXPECT_THROW(bilayer_curvature_per_strain(base, film), std::invalid_argument);
+}
+
+Membrane stretched_sheet(int n, double size, double lx, double ly) {
+  Membrane m = make_membrane(build_sheet({size, size, n, n}, SheetOptions{}));
+  stretch_frame(m, lx, ly);
+  return m;
+}
+
+struct HingeCase {
+  double lx, ly, a, c;  // stretch, and the quadric z = (a x^2 + c y^2) / 2
+};
+class HingeMoments : public ::testing::TestWithParam<HingeCase> {};
+
+// Summed over a regular triangulation, moment * theta integrates side * M : k with
+// M = D [(1 - nu) k0 + nu tr(k0) I]: the linear term of the plate energy with spontaneous
+// curvature k0 = T eps / h. Interior edges only, so (n - 1) / n of the area for each family.
+TEST_P(HingeMoments, SumToThePlateEnergysLinearTerm) {
+  const HingeCase q = GetParam();
+  const int n = 31;
+  const double size = 0.03;
+  Membrane m = stretched_sheet(n, size, q.lx, q.ly);
+  const auto all = make_polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+  const Material resin = epoxy();
+  impregnate(m, *all, resin, +1, true);
+  EXPECT_GT(m.sheet.model.hinges.size(), 0);
+  EXPECT_EQ(hinge_energy(m.sheet.model, m.state.x), 0.0);  // no moment before the release
+  begin_release(m);
+  set_release_level(m, 0.0);
+  Points x = m.state.x;
+  for (int p = 0; p < x.cols(); ++p) {
+    const double px = x(0, p) - 0.5 * size * q.lx, py = x(1, p) - 0.5 * size * q.ly;
+    x(2, p) = 0.5 * (q.a * px * px + q.c * py * py);
+  }
+  const double k = bilayer_curvature_per_strain(latex(), resin);
+  const double kx = k * (1 - 1 / q.lx), ky = k * (1 - 1 / q.ly);
+  const double d = bending_stiffness(latex()) + bending_stiffness(resin), nu = 1.0 / 3.0;
+  const double mxx = d * ((1 - nu) * kx + nu * (kx + ky)),
+               myy = d * ((1 - nu) * ky + nu * (kx + ky));
+  const double area = size * size * q.lx * q.ly * (n - 2.0) / (n - 1.0);
+  const double expected = area * (mxx * q.a + myy * q.c);
+  EXPECT_NEAR(hinge_energy(m.sheet.model, x) / expected, 1.0, 2e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, HingeMoments,
+                         ::testing::Values(HingeCase{1.5, 1.5, 1.0, 1.0},
+                                           HingeCase{1.5, 1.0, 1.0, 0.0},
+                                           HingeCase{1.5, 1.0, 0.0, 1.0},
+                                           HingeCase{1.2, 1.4, 2.0, -1.0}));
+
+// A 100 x 10 mm strip, stretched 1.5x along x, resin over all of it on one face, released:
+// the middle curls to Timoshenko's curvature, with the resin on the convex side.
+double released_strip_curvature(int side) {
+  Membrane m = make_membrane(build_sheet({0.1, 0.01, 41, 5}, SheetOptions{}));
+  stretch_frame(m, 1.5, 1.0);
+  const auto all = make_polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+  impregnate(m, *all, epoxy(), side, true);
+  begin_release(m);
+  // Newton: the 1700:1 resin/latex contrast makes relaxation slow on a strip this thin.
+  NewtonOptions o;
+  o.force_scale = m.sheet.stiffness.stretch * m.sheet.grid.hx();
+  for (int k = 1; k <= 5; ++k) {
+    set_release_level(m, 1.0 - k / 5.0);
+    EXPECT_TRUE(solve_newton(m.sheet.model, m.state, o).converged) << k;
+  }
+  // Circle through three points of the middle row, in the plane of the bend.
+  const GridSheet& g = m.sheet.grid;
+  const Points& x = m.state.x;
+  const Vec3 p0 = x.col(g.particle(10, 2)), p1 = x.col(g.particle(20, 2)),
+             p2 = x.col(g.particle(30, 2));
+  const double a = (p1 - p0).norm(), b = (p2 - p1).norm(), c = (p2 - p0).norm();
+  const double curvature = 2.0 * (p1 - p0).cross(p2 - p0).norm() / (a * b * c);
+  const double bulge = p1.z() - 0.5 * (p0.z() + p2.z());
+  return bulge > 0 ? curvature : -curvature;
+}
+
+TEST(Bilayer, ReleasedStripCurlsToTimoshenkosCurvatureWithResinOnTheConvexSide) {
+  const double expected = bilayer_curvature_per_strain(latex(), epoxy()) * (1.0 - 1.0 / 1.5);
+  const double top = released_strip_curvature(+1);
+  EXPECT_NEAR(top / expected, 1.0, 0.03);  // positive: bulges up, the top face convex
+  EXPECT_NEAR(released_strip_curvature(-1) / -expected, 1.0, 0.03);
+}
+
+}  // namespace
+}  // namespace membra
