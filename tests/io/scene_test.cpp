@@ -191,6 +191,13 @@ TEST(Scene, ProtocolErrorsNameTheField) {
   j["protocol"][0]["lambda"] = {-1.5, 1};
   EXPECT_EQ(error_at(j), "/protocol/0/lambda/0");
   j = with_protocol(strip);
+  j["protocol"][1]["bilayer"] = "yes";
+  EXPECT_EQ(error_at(j), "/protocol/1/bilayer");
+  j["protocol"][1]["bilayer"] = true;
+  EXPECT_EQ(error_at(j), "");
+  j["sheet"]["bending"] = false;  // the hinges need the bending elements to stop the curl
+  EXPECT_EQ(error_at(j), "/protocol/1/bilayer");
+  j = with_protocol(strip);
   j["protocol"][1]["material"] = "unobtainium";
   EXPECT_EQ(error_at(j), "/protocol/1/material");
   j = with_protocol(strip);

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include "membra/io/run.hpp"
+#include "membra/io/scene.hpp"
 #include "membra/model/bilayer.hpp"
+#include "membra/model/cut.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/model/hinge_kernel.hpp"
 #include "membra/solve/newton_solver.hpp"
@@ -133,6 +136,68 @@ TEST(Bilayer, ReleasedStripCurlsToTimoshenkosCurvatureWithResinOnTheConvexSide) 
   const double top = released_strip_curvature(+1);
   EXPECT_NEAR(top / expected, 1.0, 0.03);  // positive: bulges up, the top face convex
   EXPECT_NEAR(released_strip_curvature(-1) / -expected, 1.0, 0.03);
+}
+
+// The scene key reaches the model: "bilayer": true bows the strip towards the resin face,
+// without it the fully impregnated strip stays flat.
+double scene_strip_bulge(const char* side, bool bilayer) {
+  nlohmann::json j = nlohmann::json::parse(R"({
+    "name": "bilayer_strip",
+    "sheet": {"size": [100, 10], "resolution": [21, 3]},
+    "simulation": {"solver": "newton", "G": 0},
+    "protocol": [
+      {"step": "stretch", "lambda": [1.5, 1.0]},
+      {"step": "impregnate", "pattern": {"polygon": {"points": [[-1, -1], [151, -1], [151, 11], [-1, 11]]}}},
+      {"step": "release", "increments": 4, "perturbation": 0}
+    ]})");
+  j["protocol"][1]["resin_side"] = side;
+  j["protocol"][1]["bilayer"] = bilayer;
+  const RunResult r = run_scene(parse_scene(j));
+  EXPECT_TRUE(r.solve.converged);
+  const Points& x = r.prepared.membrane.state.x;
+  const GridSheet& g = r.prepared.membrane.sheet.grid;
+  // The sag of the middle over the chord, along the sheet's normal there (+z of the paper),
+  // whatever rigid rotation the free strip took.
+  const Vec3 mid = x.col(g.particle(10, 1));
+  const Vec3 normal = (x.col(g.particle(11, 1)) - x.col(g.particle(9, 1)))
+                          .cross(x.col(g.particle(10, 2)) - x.col(g.particle(10, 0)))
+                          .normalized();
+  return (mid - 0.5 * (x.col(g.particle(0, 1)) + x.col(g.particle(20, 1)))).dot(normal);
+}
+
+TEST(Bilayer, SceneKeyBowsTheStripTowardsTheResinFace) {
+  // About 13 mm for a 150 mm arc of radius 210 mm.
+  EXPECT_NEAR(scene_strip_bulge("top", true), 13e-3, 1.5e-3);
+  EXPECT_NEAR(scene_strip_bulge("bottom", true), -13e-3, 1.5e-3);
+  EXPECT_NEAR(scene_strip_bulge("top", false), 0.0, 1e-6);
+}
+
+// Cuts and holes take the hinges of the triangles they remove, and the rest keep their moments.
+TEST(Bilayer, CutsAndHolesRemoveTheHingesTheyCross) {
+  Membrane m = stretched_sheet(11, 0.05, 1.5, 1.5);
+  const auto all = make_polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+  impregnate(m, *all, epoxy(), +1, true);
+  begin_release(m);
+  set_release_level(m, 0.0);
+  auto consistent = [](const Membrane& mm) {
+    const Hinges& h = mm.sheet.model.hinges;
+    EXPECT_EQ(h.size(), static_cast<int>(mm.hinge_full_moment.size()));
+    for (int e = 0; e < h.size(); ++e) {
+      for (int p : h.v[e]) EXPECT_LT(p, mm.sheet.model.num_particles());
+      EXPECT_EQ(h.moment[e], mm.hinge_full_moment[e]);  // released: the full moment
+      EXPECT_NE(h.moment[e], 0.0);
+    }
+  };
+  const int before = m.sheet.model.hinges.size();
+  EXPECT_EQ(before, 3 * 10 * 10 - 2 * 10);  // interior edges of a 10 x 10 cell mesh
+  consistent(m);
+  cut_along(m, {{0.0, 0.0375}, {0.0375, 0.0375}});  // half way across, between grid lines
+  const int after_cut = m.sheet.model.hinges.size();
+  EXPECT_LT(after_cut, before);
+  consistent(m);
+  punch_hole(m, *make_ellipse({0.05, 0.02}, 0.012, 0.012, 0.0));
+  EXPECT_LT(m.sheet.model.hinges.size(), after_cut);
+  consistent(m);
 }
 
 }  // namespace

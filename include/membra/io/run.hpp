@@ -57,7 +57,7 @@ struct RunResult {
   SolveReport solve;       // totals over all solves; residual and convergence of the last
   std::vector<StepReport> steps;
   double elastic_energy = 0.0;  // J, springs
-  double bending_energy = 0.0;  // J
+  double bending_energy = 0.0;  // J, bending elements and bilayer hinges
   double gravity_energy = 0.0;  // J
   double kinetic_energy = 0.0;  // J
   ShapeSummary shape;
