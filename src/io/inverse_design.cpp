@@ -112,8 +112,11 @@ DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
   }
   if (top.has("materials")) s.materials = top.at("materials");
   if (top.has("resin")) {
-    const JsonObject o = top.object("resin", {"material", "min_feature", "cell"});
+    const JsonObject o =
+        top.object("resin", {"material", "min_feature", "cell", "resin_side", "bilayer"});
     s.resin = o.string("material", s.resin);
+    s.resin_side = o.string("resin_side", "top", {"top", "bottom"});
+    s.bilayer = o.boolean("bilayer", false);
     s.layout.min_feature = o.number("min_feature", 4.0, Bounds::positive()) * units::mm;
     s.layout.cell = o.number("cell", 20.0, Bounds::positive()) * units::mm;
     if (s.layout.cell < 2.0 * s.layout.min_feature)
@@ -180,7 +183,11 @@ json design_scene(const DesignSpec& spec, const Stencil& stencil) {
   json& p = scene["protocol"];
   p.push_back({{"step", "stretch"}, {"lambda", {spec.lambda.x(), spec.lambda.y()}}});
   if (!stencil.json.is_null())
-    p.push_back({{"step", "impregnate"}, {"material", spec.resin}, {"pattern", stencil.json}});
+    p.push_back({{"step", "impregnate"},
+                 {"material", spec.resin},
+                 {"resin_side", spec.resin_side},
+                 {"bilayer", spec.bilayer},
+                 {"pattern", stencil.json}});
   p.push_back({{"step", "release"}, {"increments", spec.increments}});
   return scene;
 }

@@ -106,6 +106,18 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   j = small_design({{"cap", {{"diameter", 100}, {"height", 20}}}});
   j["resin"]["material"] = "unobtainium";
   EXPECT_NE(error_of(j).find("material"), std::string::npos);
+  j = small_design({{"cap", {{"diameter", 100}, {"height", 20}}}});
+  j["resin"]["resin_side"] = "left";
+  EXPECT_NE(error_of(j).find("/resin/resin_side"), std::string::npos);
+  // The face and the bilayer reach the stencil's impregnate step.
+  j["resin"]["resin_side"] = "bottom";
+  j["resin"]["bilayer"] = true;
+  Stencil st;
+  st.json = {{"polygon", {{"points", {{10, 10}, {50, 10}, {50, 50}}}}}};
+  const json coated = design_scene(parse_design(j), st);
+  EXPECT_EQ(coated["protocol"][1]["resin_side"], "bottom");
+  EXPECT_EQ(coated["protocol"][1]["bilayer"], true);
+  EXPECT_TRUE(parse_scene(coated).protocol[1].bilayer);
 }
 
 TEST(InverseDesign, ObjAndHeightFieldTargetsWorkLikeTheAnalyticOnes) {

@@ -28,10 +28,12 @@ struct DesignSpec {
   Vec2 lambda{1.5, 1.5};  // the pre-stretch; the natural sheet is frame / lambda
   int resolution = 25;    // particles along each side of the simulated sheet
   std::string material = "latex", resin = "epoxy";
-  nlohmann::json materials;  // the scene's "materials" object, passed on
-  StencilLayout layout;      // cell 20 mm, minimum feature 4 mm
-  int evaluations = 24;      // forward simulations at most
-  double budget = 900.0;     // s of wall time at most
+  std::string resin_side = "top";  // the face the stencil is applied to
+  bool bilayer = false;            // resin on that face only (the composite curls; bilayer.hpp)
+  nlohmann::json materials;        // the scene's "materials" object, passed on
+  StencilLayout layout;            // cell 20 mm, minimum feature 4 mm
+  int evaluations = 24;            // forward simulations at most
+  double budget = 900.0;           // s of wall time at most
   std::string solver = "static";
   double tolerance = 1e-6;
   int increments = 10;  // of the release path
