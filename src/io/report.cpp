@@ -1,5 +1,7 @@
 #include "membra/io/report.hpp"
 
+#include <numbers>
+
 #include "membra/model/units.hpp"
 #include "membra/version.hpp"
 
@@ -97,13 +99,21 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                       {"seconds", st.seconds},
                       {"message", st.message}};
     j["cuts"] = nlohmann::json::array();
-    for (const StressConcentration& c : r.concentrations)
-      j["cuts"].push_back({{"step", c.name},
+    for (const StressConcentration& c : r.concentrations) {
+      nlohmann::json cj = {{"step", c.name},
                            {"kind", c.kind},
                            {"peak_stress", c.peak_stress / units::MPa},
                            {"peak_at", {c.peak_at.x() / units::mm, c.peak_at.y() / units::mm}},
                            {"far_field_stress", c.far_field_stress / units::MPa},
-                           {"concentration", c.concentration}});
+                           {"concentration", c.concentration}};
+      if (c.has_edge) {
+        cj["edge_stress"] = c.edge_stress / units::MPa;
+        cj["edge_concentration"] = c.edge_concentration;
+        cj["edge_angle"] = c.edge_angle * 180.0 / std::numbers::pi;
+        cj["hole_radius"] = c.hole_radius / units::mm;
+      }
+      j["cuts"].push_back(cj);
+    }
   }
   j["units"] = {
       {"residual", "N"},
@@ -130,6 +140,12 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
       {"cuts.far_field_stress",
        "MPa (median largest principal stress beyond a quarter of the sheet's side)"},
       {"cuts.concentration", "1 (peak / far field)"},
+      {"cuts.edge_stress",
+       "MPa (holes: largest principal stress extrapolated to the edge of the equal-area circle "
+       "from 3-8 spacings off it, largest over 72 rays)"},
+      {"cuts.edge_concentration", "1 (edge_stress / far field)"},
+      {"cuts.edge_angle", "degrees from +x, paper: the ray of edge_stress"},
+      {"cuts.hole_radius", "mm (the circle with the hole's area)"},
       {"cuts.peak_at", "mm, paper coordinates"},
       {"stability.min_eigenvalue",
        "N/mm (upper bound of the energy Hessian's smallest eigenvalue when unstable, else 0)"},

@@ -2,6 +2,7 @@
 
 #include "membra/io/input_error.hpp"
 #include "membra/io/memory_estimate.hpp"
+#include "membra/measure/hole_edge.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/added_springs.hpp"
 #include "membra/model/benchmark_problem.hpp"
@@ -326,8 +327,19 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
     const auto principal = max_principal_stress(node_stress(g, m, s.x, thickness));
     const double near = 1.5 * std::max(g.hx(), g.hy());
     const double far = 0.25 * std::min(g.width(), g.height());
-    for (const StressFeature& f : r.features)
-      r.concentrations.push_back(stress_concentration(m, principal, f, near, far));
+    for (const StressFeature& f : r.features) {
+      StressConcentration c = stress_concentration(m, principal, f, near, far);
+      if (f.kind == "hole") {
+        const HoleEdge e = hole_edge(g, principal, f.where);
+        c.has_edge = e.valid;
+        c.edge_stress = e.value;
+        c.edge_angle = e.angle;
+        c.hole_radius = e.radius;
+        if (e.valid && c.far_field_stress > 0.0)
+          c.edge_concentration = e.value / c.far_field_stress;
+      }
+      r.concentrations.push_back(c);
+    }
   }
   return r;
 }

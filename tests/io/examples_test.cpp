@@ -60,6 +60,9 @@ TEST(Examples, CutAndHoleConcentrateStress) {
   // The hole's peak is above or below it (the stretch runs along x): paper centre (133, 130) mm.
   const Vec2 d = hole.peak_at - Vec2(0.1333, 0.13);
   EXPECT_GT(std::abs(d.y()), std::abs(d.x()));
+  // Its radius is 3 spacings: too small to read an edge value from the field off the edge.
+  EXPECT_FALSE(hole.has_edge);
+  EXPECT_FALSE(cut.has_edge);
 }
 
 TEST(Examples, CurvatureMapIsCarriedIntoTheForm) {

@@ -1,4 +1,5 @@
 // Scene parsing: values converted to SI, and every bad input named by its JSON pointer.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -324,6 +325,27 @@ TEST(Scene, CutsAndHolesCanComeAfterTheRelease) {
   EXPECT_GT(r.steps[3].particles_removed, 0);
   EXPECT_EQ(r.concentrations.size(), 2u);
   EXPECT_EQ(r.prepared.membrane.sheet.model.num_particles(), 11 * 6 - r.steps[3].particles_removed);
+}
+
+TEST(Scene, LargeHolesReportTheEdgeStressExtrapolatedFromOffTheStaircase) {
+  // A 120 mm plate pulled 1 % between grips on the left and right, a round hole of 28 mm
+  // (7 spacings in radius; the equal-area circle is 15 mm): Heywood's finite-width factor on
+  // the gross stress, (2 + (1 - d/W)^3) / (1 - d/W) = 3.23 for d/W = 0.25.
+  const json j = json::parse(R"({"name": "hole",
+    "sheet": {"size": [120, 120], "resolution": [61, 61]},
+    "simulation": {"solver": "newton", "G": 0},
+    "protocol": [{"step": "stretch", "lambda": [1.01, 1.0], "hold": ["left", "right"]},
+                 {"step": "cut", "hole": {"circle": {"center": [60.6, 60], "radius": 14}}}]})");
+  const RunResult r = run_scene(parse_scene(j));
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  ASSERT_EQ(r.concentrations.size(), 1u);
+  const StressConcentration& c = r.concentrations[0];
+  ASSERT_TRUE(c.has_edge);
+  EXPECT_NEAR(c.hole_radius, 0.015, 0.001);
+  const double d_over_w = 2 * c.hole_radius / 0.12;
+  const double heywood = (2 + std::pow(1 - d_over_w, 3)) / (1 - d_over_w);
+  EXPECT_NEAR(c.edge_concentration / heywood, 1.0, 0.15);
+  EXPECT_NEAR(std::abs(std::sin(c.edge_angle)), 1.0, 0.05);  // above or below the hole
 }
 
 TEST(Scene, PatternCoveringNoSpringIsReportedWhenRun) {

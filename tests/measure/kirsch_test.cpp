@@ -9,13 +9,16 @@
 // membra's hole is a staircase of grid cells. Its stress field matches Kirsch's for the circle of
 // the same area from two spacings off the edge; on the edge the staircase's flat runs carry less
 // (measured 0.78x) and its corners more - the known staircase effect of grid models, which does
-// not shrink as the grid is refined. These tests pin both facts down (docs/measures.md).
+// not shrink as the grid is refined. These tests pin both facts down, and check the edge value
+// extrapolated from 3-8 spacings off the edge (hole_edge.hpp) against Kirsch's: the 15 %
+// (docs/deformation.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <numeric>
 
+#include "membra/measure/hole_edge.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/solve/newton_solver.hpp"
@@ -64,6 +67,23 @@ double at(const Plate& p, int i, int j, int component) {
   return q >= 0 ? p.stress.sigma[q](component, component) : 0.0;
 }
 
+// The normal stress n^T sigma n across the in-plane unit vector n, at every particle.
+std::vector<double> normal_stress(const Plate& p, const Vec2& n) {
+  const Vec3 n3(n.x(), n.y(), 0.0);
+  std::vector<double> v;
+  for (const auto& s : p.stress.sigma) v.push_back(n3.dot(s * n3));
+  return v;
+}
+
+// The hoop stress (across the ray) extrapolated to the equal-area circle along `direction`
+// (hole_edge.hpp).
+double edge_hoop(const Plate& p, const Vec2& direction) {
+  const auto v = edge_value(p.m.sheet.grid, normal_stress(p, Vec2(-direction.y(), direction.x())),
+                            Vec2(kC * kH, kC * kH), p.radius, direction);
+  EXPECT_TRUE(v.has_value());
+  return v.value_or(0.0);
+}
+
 // First node row above the hole on the centre column.
 int edge_row(const Plate& p) {
   int j = kC;
@@ -95,6 +115,26 @@ TEST(Kirsch, UniaxialTensionMatchesKirschOffTheEdge) {
               top, side, p.radius / kH);
   EXPECT_GT(top, 2.0);
   EXPECT_NEAR(side, -1.0, 0.25);
+  // Extrapolated from 2-6 spacings off the edge: the 15 % on the peak, and about -1 on
+  // the load axis.
+  const double top_x = edge_hoop(p, Vec2(0, 1)) / s, bottom_x = edge_hoop(p, Vec2(0, -1)) / s;
+  const double side_x = edge_hoop(p, Vec2(1, 0)) / s;
+  std::printf("uniaxial edge, extrapolated: top %.3f, bottom %.3f, side %.3f\n", top_x, bottom_x,
+              side_x);
+  EXPECT_NEAR(top_x, 3.0, 0.15 * 3.0);
+  EXPECT_NEAR(bottom_x, 3.0, 0.15 * 3.0);
+  EXPECT_NEAR(side_x, -1.0, 0.15);
+  // The report's measure: the largest principal stress, largest over the rays, lies above or
+  // below the hole.
+  std::vector<Vec2> removed;
+  for (int j = 0; j < kN; ++j)
+    for (int i = 0; i < kN; ++i)
+      if (p.m.sheet.grid.particle(i, j) < 0) removed.emplace_back(i * kH, j * kH);
+  const HoleEdge he = hole_edge(p.m.sheet.grid, max_principal_stress(p.stress), removed);
+  ASSERT_TRUE(he.valid);
+  EXPECT_NEAR(he.value / s, 3.0, 0.15 * 3.0);
+  EXPECT_NEAR(std::abs(std::sin(he.angle)), 1.0, 0.05);
+  EXPECT_NEAR(he.radius, p.radius, 1e-9);
 }
 
 TEST(Kirsch, EquibiaxialTensionMatchesKirschOffTheEdge) {
@@ -112,6 +152,11 @@ TEST(Kirsch, EquibiaxialTensionMatchesKirschOffTheEdge) {
   const double top = at(p, kC, edge, 0) / s;
   std::printf("equibiaxial edge: %.3f (Kirsch 2)\n", top);
   EXPECT_GT(top, 1.4);
+  for (double t = 0.0; t < 6.28; t += 0.5) {
+    const double hoop = edge_hoop(p, Vec2(std::cos(t), std::sin(t))) / s;
+    std::printf("equibiaxial edge, extrapolated, angle %.1f: %.3f\n", t, hoop);
+    EXPECT_NEAR(hoop, 2.0, 0.15 * 2.0) << "angle " << t;
+  }
 }
 
 }  // namespace

@@ -23,6 +23,12 @@ struct StressConcentration {
   Vec2 peak_at = Vec2::Zero();    // paper position of that particle, m
   double far_field_stress = 0.0;  // Pa: median largest principal stress beyond `far`
   double concentration = 0.0;     // peak / far field (0 when the far field carries no tension)
+  // Holes: the edge value extrapolated from off the staircase edge (hole_edge.hpp).
+  bool has_edge = false;
+  double edge_stress = 0.0;         // Pa, largest over the rays
+  double edge_concentration = 0.0;  // edge_stress / far field
+  double edge_angle = 0.0;          // rad from +x (paper), the ray of edge_stress
+  double hole_radius = 0.0;         // m, the circle with the hole's area
 };
 
 // Distances are measured between paper positions (model.reference), so they mean the same
