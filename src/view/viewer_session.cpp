@@ -186,12 +186,13 @@ std::string ViewerSession::stretch() {
   return "";
 }
 
-std::string ViewerSession::impregnate_with(const PatternPtr& pattern, const nlohmann::json& json) {
-  const ProtocolStep* s = first_step(ProtocolStep::Kind::impregnate);
+std::string ViewerSession::impregnate_with(const PatternPtr& pattern, const nlohmann::json& json,
+                                           const ProtocolStep* s) {
   const Material resin = s ? s->resin : epoxy();
   const int side = s ? s->resin_side : +1;
+  const bool bilayer = s && s->bilayer;
   push_undo();
-  const int n = membra::impregnate(prepared_.membrane, *pattern, resin, side);
+  const int n = membra::impregnate(prepared_.membrane, *pattern, resin, side, bilayer);
   if (n == 0) {
     restore(undo_.back());
     undo_.pop_back();
@@ -200,7 +201,8 @@ std::string ViewerSession::impregnate_with(const PatternPtr& pattern, const nloh
   log_.push_back({{"step", "impregnate"},
                   {"pattern", json},
                   {"material", material_name_},
-                  {"resin_side", side > 0 ? "top" : "bottom"}});
+                  {"resin_side", side > 0 ? "top" : "bottom"},
+                  {"bilayer", bilayer}});
   stage_ = Stage::impregnated;
   model_changed();
   return "";
@@ -212,7 +214,8 @@ std::string ViewerSession::impregnate() {
   const PatternPtr pattern = resin_pattern();
   if (!pattern) return "there is no resin to apply: paint some first";
   const nlohmann::json json = resin_pattern_json();
-  const std::string why = impregnate_with(pattern, json);
+  const std::string why =
+      impregnate_with(pattern, json, first_step(ProtocolStep::Kind::impregnate));
   if (!why.empty()) return why;
   // What was applied is used up; the next strokes start a new pattern.
   strokes_.clear();
@@ -491,7 +494,7 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
       if (stage_ == Stage::flat || stage_ == Stage::released)
         return "impregnate needs the stretched sheet";
       scene_pattern_used_ = true;
-      return logged(impregnate_with(step.pattern, step.pattern_json));
+      return logged(impregnate_with(step.pattern, step.pattern_json, &step));
     case ProtocolStep::Kind::release:
       return logged(release());
     case ProtocolStep::Kind::cut: {

@@ -209,5 +209,25 @@ TEST(ViewerSession, PlaysTheScenesOwnProtocol) {
   EXPECT_EQ(s.log(), json(protocol));
 }
 
+// Painted resin takes the face and the bilayer of the scene's impregnate step, and the saved
+// protocol keeps them, so `membra run` curls the sheet the same way.
+TEST(ViewerSession, PaintedResinFollowsTheScenesBilayer) {
+  const json protocol = {
+      {{"step", "stretch"}, {"lambda", {1.5, 1.0}}},
+      {{"step", "impregnate"},
+       {"resin_side", "bottom"},
+       {"bilayer", true},
+       {"pattern", {{"strip", {{"points", {{0, 50}, {150, 50}}}, {"width", 20}}}}}}};
+  ViewerSession s(small_scene(protocol));
+  ASSERT_EQ(s.stretch(), "");
+  ASSERT_EQ(s.paint(mm(75, 50), 15 * units::mm), "");
+  ASSERT_EQ(s.impregnate(), "");
+  EXPECT_GT(s.membrane().sheet.model.hinges.size(), 0);
+  EXPECT_EQ(s.membrane().resin_side, -1);
+  const json& step = s.log().back();
+  EXPECT_EQ(step["bilayer"], true);
+  EXPECT_EQ(step["resin_side"], "bottom");
+}
+
 }  // namespace
 }  // namespace membra

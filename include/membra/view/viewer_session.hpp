@@ -132,7 +132,10 @@ class ViewerSession {
   const ProtocolStep* first_step(ProtocolStep::Kind kind) const;
   std::string apply_scene_step(const ProtocolStep& step);
   SliceReport advance_slice(long max_iterations, double max_seconds);
-  std::string impregnate_with(const PatternPtr& pattern, const nlohmann::json& json);
+  // Applies `pattern` with the resin, face and bilayer of `step` (the scene's first impregnate
+  // step for painted resin; epoxy on top, soaked through, when the scene has none).
+  std::string impregnate_with(const PatternPtr& pattern, const nlohmann::json& json,
+                              const ProtocolStep* step);
 
   Scene scene_;
   PreparedScene prepared_;
