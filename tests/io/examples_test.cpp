@@ -1,9 +1,12 @@
 // The bundled example scenes, on coarser grids so the suite stays fast, reproduce the outcomes
 // the paper reports; and the static and dynamic solvers agree where the answer is unique.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/model/bilayer.hpp"
 
 namespace membra {
 namespace {
@@ -41,6 +44,26 @@ TEST(Examples, IntrinsicGrowthGivesSaddles) {
     EXPECT_EQ(r.form, "anticlastic") << name;
     EXPECT_GT(r.shape.height, 0.05 * 0.2) << name;  // it leaves the plane
   }
+}
+
+TEST(Examples, ACoatOnOneFaceRollsTheSheetToTimoshenkosRadius) {
+  const RunResult r = run_example("bilayer_roll.json", {"sheet.resolution=[21,21]"});
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  // Curvature along x only (the stretch was along x), the coat keeping the 300 mm frame length:
+  // an arc of radius R = 1/kappa, whose sagitta is the height.
+  const double kappa = bilayer_curvature_per_strain(latex(), epoxy()) * (1.0 - 1.0 / 1.5);
+  const double radius = 1.0 / kappa, arc = 0.3;
+  const double sagitta = radius * (1.0 - std::cos(0.5 * arc / radius));  // 51 mm
+  EXPECT_NEAR(r.shape.height / sagitta, 1.0, 0.05);
+  EXPECT_EQ(r.form, "developable");
+  // The coat is on the convex side: the middle of the sheet lies above its ends (+z, top face).
+  const Points& x = r.prepared.membrane.state.x;
+  const GridSheet& g = r.prepared.membrane.sheet.grid;
+  const Vec3 normal = (x.col(g.particle(11, 10)) - x.col(g.particle(9, 10)))
+                          .cross(x.col(g.particle(10, 11)) - x.col(g.particle(10, 9)));
+  const Vec3 sag =
+      x.col(g.particle(10, 10)) - 0.5 * (x.col(g.particle(0, 10)) + x.col(g.particle(20, 10)));
+  EXPECT_GT(sag.dot(normal.normalized()), 0.9 * sagitta);
 }
 
 TEST(Examples, CutAndHoleConcentrateStress) {
