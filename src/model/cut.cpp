@@ -126,24 +126,21 @@ int cut_along(Membrane& m, const std::vector<Vec2>& line, std::vector<Vec2>* whe
                    !crosses_polyline(xy(b.v[e][1]), xy(b.v[e][2]), line);
   filter_bending(m, keep_bend);
 
-  // A hinge goes when its edge or either of its triangles is cut.
+  auto cut_triangle = [&](int p0, int p1, int p2) {
+    return crosses_polyline(xy(p0), xy(p1), line) || crosses_polyline(xy(p1), xy(p2), line) ||
+           crosses_polyline(xy(p2), xy(p0), line);
+  };
+  // A hinge goes with either of its triangles.
   const Hinges& h = m.sheet.model.hinges;
   std::vector<bool> keep_hinge(h.size(), true);
   for (int e = 0; e < h.size(); ++e) {
     const auto& v = h.v[e];
-    bool cut = crosses_polyline(xy(v[0]), xy(v[1]), line);
-    for (int o : {v[2], v[3]})
-      cut =
-          cut || crosses_polyline(xy(v[0]), xy(o), line) || crosses_polyline(xy(v[1]), xy(o), line);
-    keep_hinge[e] = !cut;
+    keep_hinge[e] = !cut_triangle(v[0], v[1], v[2]) && !cut_triangle(v[1], v[0], v[3]);
   }
   filter_hinges(m, keep_hinge);
 
   auto& tris = m.sheet.triangles;
-  std::erase_if(tris, [&](const Triangle& t) {
-    return crosses_polyline(xy(t[0]), xy(t[1]), line) ||
-           crosses_polyline(xy(t[1]), xy(t[2]), line) || crosses_polyline(xy(t[2]), xy(t[0]), line);
-  });
+  std::erase_if(tris, [&](const Triangle& t) { return cut_triangle(t[0], t[1], t[2]); });
   return removed;
 }
 
