@@ -36,10 +36,22 @@ int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges) {
   m.stretch = m.stretch.cwiseProduct(Vec2(lx, ly));
   const GridSheet& g = m.sheet.grid;
   Model& model = m.sheet.model;
+  // The frame holds the sheet's outer rim: the first and last node of every row (left, right)
+  // and of every column (bottom, top). On a rectangle these are its four edges; on a disk, the
+  // nodes along its circle; the rims of holes inside the sheet are not held.
+  std::vector<int> row_lo(static_cast<size_t>(g.ny()), g.nx()), row_hi(row_lo.size(), -1);
+  std::vector<int> col_lo(static_cast<size_t>(g.nx()), g.ny()), col_hi(col_lo.size(), -1);
   for (int p = 0; p < model.num_particles(); ++p) {
     const auto [i, j] = g.node(p);
-    const bool held = (edges.left && i == 0) || (edges.right && i == g.nx() - 1) ||
-                      (edges.bottom && j == 0) || (edges.top && j == g.ny() - 1);
+    const auto ui = static_cast<size_t>(i), uj = static_cast<size_t>(j);
+    row_lo[uj] = std::min(row_lo[uj], i), row_hi[uj] = std::max(row_hi[uj], i);
+    col_lo[ui] = std::min(col_lo[ui], j), col_hi[ui] = std::max(col_hi[ui], j);
+  }
+  for (int p = 0; p < model.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    const auto ui = static_cast<size_t>(i), uj = static_cast<size_t>(j);
+    const bool held = (edges.left && i == row_lo[uj]) || (edges.right && i == row_hi[uj]) ||
+                      (edges.bottom && j == col_lo[ui]) || (edges.top && j == col_hi[ui]);
     if (!held) continue;
     if (model.pinned(p)) continue;  // already held (a user pin or the frame)
     model.pin(p);

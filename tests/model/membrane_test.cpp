@@ -22,6 +22,55 @@ TEST(Membrane, StretchIsAffineAndInEquilibriumOnAFullGrid) {
   EXPECT_THROW(stretch_frame(m, 0.0, 1.0), std::invalid_argument);
 }
 
+// A disk is held all round its rim (not only where it touches the grid's edges), and a hole's
+// rim is left free: the stretch of a disk with a hole is affine and in equilibrium, as on a
+// full rectangle.
+TEST(Membrane, TheFrameHoldsADisksRimAndNotAHolesRim) {
+  const double r = 0.025;
+  auto keep = [r](double x, double y) {
+    const double dx = x - r, dy = y - r;
+    const double d2 = dx * dx + dy * dy;
+    return d2 <= r * r * (1.0 + 1e-9) && d2 >= 0.3 * r * 0.3 * r;
+  };
+  Membrane m = make_membrane(build_sheet({2 * r, 2 * r, 21, 21}, SheetOptions{}, keep));
+  const Points paper = m.state.x;
+  const int held = stretch_frame(m, 1.5, 1.5);
+  const GridSheet& g = m.sheet.grid;
+  int rim = 0, inner_rim = 0;
+  for (int p = 0; p < g.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    const bool missing_neighbour = g.particle(i - 1, j) < 0 || g.particle(i + 1, j) < 0 ||
+                                   g.particle(i, j - 1) < 0 || g.particle(i, j + 1) < 0;
+    const double d = (paper.col(p) - Vec3(r, r, 0.0)).norm();
+    if (missing_neighbour && d > 0.6 * r) {
+      ++rim;
+      EXPECT_TRUE(m.sheet.model.pinned(p)) << "outer rim node " << i << ", " << j;
+    }
+    if (missing_neighbour && d < 0.6 * r) {
+      ++inner_rim;
+      EXPECT_FALSE(m.sheet.model.pinned(p)) << "hole rim node " << i << ", " << j;
+    }
+  }
+  EXPECT_GT(rim, 40);
+  EXPECT_GT(inner_rim, 8);
+  EXPECT_GE(held, rim);
+  // Every particle moved by the stretch, none left behind: uniform strain, so no net force on
+  // any particle with all its neighbours (the hole's free rim carries the uniform stress's
+  // traction and moves when solved).
+  EXPECT_LT((m.state.x - 1.5 * paper).cwiseAbs().maxCoeff(), 1e-15);
+  Points f;
+  compute_static_forces(m.sheet.model, m.state.x, f);
+  for (int p = 0; p < g.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    bool full = true;
+    for (int dj = -2; dj <= 2; ++dj)
+      for (int di = -2; di <= 2; ++di) full = full && g.particle(i + di, j + dj) >= 0;
+    if (full) {
+      EXPECT_LT(f.col(p).norm(), 1e-9 * m.sheet.stiffness.stretch * r) << i << ", " << j;
+    }
+  }
+}
+
 TEST(Membrane, ReleaseWithoutResinReturnsToNaturalSizeAndStaysFlat) {
   Membrane m = small_sheet();
   stretch_frame(m, 1.5, 1.0);

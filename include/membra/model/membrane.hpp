@@ -45,7 +45,9 @@ struct FrameEdges {
 };
 
 // stretch: maps positions by (lx, ly) and pins the held edges to the frame (all four by
-// default; only left and right for a uniaxial stretch whose free sides may contract).
+// default; only left and right for a uniaxial stretch whose free sides may contract). An edge is
+// the sheet's outer rim seen from that side (the first or last node of each row or column), so a
+// disk is held all round its circle and the rims of holes are left free.
 // Requires lx, ly > 0. Returns the number of frame particles.
 int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges = {});
 
