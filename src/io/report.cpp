@@ -61,6 +61,9 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
                          {"kinetic", r.kinetic_energy}};
     j["shape"] = {{"height", r.shape.height / units::mm},
                   {"z_range", r.shape.z_range / units::mm},
+                  {"global_height", r.shape.global_height / units::mm},
+                  {"fold_rms", r.shape.fold_rms / units::mm},
+                  {"fold_max", r.shape.fold_max / units::mm},
                   {"bbox_min", mm3(r.shape.bbox_min)},
                   {"bbox_max", mm3(r.shape.bbox_max)},
                   {"form", r.form}};
@@ -125,6 +128,9 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
       {"energy_parts", "J"},
       {"shape.height", "mm (extent normal to the best-fit plane)"},
       {"shape.z_range", "mm"},
+      {"shape.global_height", "mm (height of the form averaged over windows 1/8 of the sheet)"},
+      {"shape.fold_rms", "mm (rms distance from the window's plane: local folds)"},
+      {"shape.fold_max", "mm (largest such distance)"},
       {"curvature.total", "rad (sum of interior angle defects = integral of K dA)"},
       {"curvature.positive", "rad"},
       {"curvature.negative", "rad"},

@@ -304,7 +304,7 @@ RunResult run_scene(const Scene& scene, const std::function<void(const Progress&
   r.bending_energy = bending_energy(m, s.x) + hinge_energy(m, s.x);
   r.gravity_energy = gravity_energy(m, s.x);
   r.kinetic_energy = kinetic_energy(m, s.v);
-  r.shape = summarize_shape(s.x);
+  r.shape = summarize_shape(s.x, m.reference);
   r.curvature = gaussian_curvature(s.x, mem.sheet.triangles);
   smooth_density_on_grid(mem.sheet.grid, r.curvature);
   r.form = classify_form(r.curvature);

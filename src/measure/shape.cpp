@@ -1,23 +1,93 @@
 #include "membra/measure/shape.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
 #include <Eigen/Eigenvalues>
 
 namespace membra {
 
-ShapeSummary summarize_shape(const Points& x) {
+double height_over_best_plane(const Points& x, Vec3* normal) {
+  if (x.cols() == 0) return 0.0;
+  const Vec3 centroid = x.rowwise().mean();
+  const Points centred = x.colwise() - centroid;
+  const Eigen::Matrix3d cov = centred * centred.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  Vec3 n = eig.eigenvectors().col(0);  // eigenvalues ascend: column 0 is the plane normal
+  if (n.z() < 0) n = -n;
+  if (normal) *normal = n;
+  const Eigen::RowVectorXd h = n.transpose() * centred;
+  return h.maxCoeff() - h.minCoeff();
+}
+
+namespace {
+
+// Each particle's neighbourhood: the particles within `radius` of it on the paper (found
+// through a bucket grid of cell `radius`). Its mean position is the global form there; the
+// distance of the particle from the neighbourhood's least-squares plane is its fold.
+struct Neighbourhoods {
+  Points mean;
+  Eigen::VectorXd fold;
+};
+
+Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double radius) {
+  const auto n = x.cols();
+  const Vec3 lo = paper.rowwise().minCoeff();
+  auto cell = [&](const Vec3& p) {
+    return std::pair<long, long>{std::lround(std::floor((p.x() - lo.x()) / radius)),
+                                 std::lround(std::floor((p.y() - lo.y()) / radius))};
+  };
+  auto key = [](long i, long j) { return (i << 32) ^ (j & 0xffffffffL); };
+  std::unordered_map<long, std::vector<Eigen::Index>> buckets;
+  for (Eigen::Index p = 0; p < n; ++p) {
+    const auto [i, j] = cell(paper.col(p));
+    buckets[key(i, j)].push_back(p);
+  }
+  Neighbourhoods out{Points(3, n), Eigen::VectorXd::Zero(n)};
+  const double r2 = radius * radius;
+  std::vector<Eigen::Index> near;
+  for (Eigen::Index p = 0; p < n; ++p) {
+    const auto [i, j] = cell(paper.col(p));
+    near.clear();
+    for (long dj = -1; dj <= 1; ++dj)
+      for (long di = -1; di <= 1; ++di) {
+        const auto it = buckets.find(key(i + di, j + dj));
+        if (it == buckets.end()) continue;
+        for (Eigen::Index q : it->second)
+          if ((paper.col(q) - paper.col(p)).head<2>().squaredNorm() <= r2) near.push_back(q);
+      }
+    Vec3 mean = Vec3::Zero();
+    for (Eigen::Index q : near) mean += x.col(q);
+    mean /= static_cast<double>(near.size());  // >= 1: p itself
+    out.mean.col(p) = mean;
+    if (near.size() < 3) continue;
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (Eigen::Index q : near) cov += (x.col(q) - mean) * (x.col(q) - mean).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    out.fold[p] = std::abs(eig.eigenvectors().col(0).dot(x.col(p) - mean));
+  }
+  return out;
+}
+
+}  // namespace
+
+ShapeSummary summarize_shape(const Points& x, const Points& paper) {
   ShapeSummary s;
   if (x.cols() == 0) return s;
   s.bbox_min = x.rowwise().minCoeff();
   s.bbox_max = x.rowwise().maxCoeff();
   s.z_range = s.bbox_max.z() - s.bbox_min.z();
-  const Vec3 centroid = x.rowwise().mean();
-  const Points centred = x.colwise() - centroid;
-  const Eigen::Matrix3d cov = centred * centred.transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  s.normal = eig.eigenvectors().col(0);  // eigenvalues ascend: column 0 is the plane normal
-  if (s.normal.z() < 0) s.normal = -s.normal;
-  const Eigen::RowVectorXd h = s.normal.transpose() * centred;
-  s.height = h.maxCoeff() - h.minCoeff();
+  s.height = height_over_best_plane(x, &s.normal);
+  if (paper.cols() != x.cols()) return s;
+  const Vec3 extent = paper.rowwise().maxCoeff() - paper.rowwise().minCoeff();
+  const double size = std::max(extent.x(), extent.y());
+  if (!(size > 0.0)) return s;
+  const Neighbourhoods near = paper_neighbourhoods(x, paper, size / 16.0);
+  s.global_height = height_over_best_plane(near.mean);
+  s.fold_rms = std::sqrt(near.fold.squaredNorm() / static_cast<double>(x.cols()));
+  s.fold_max = near.fold.maxCoeff();
   return s;
 }
 

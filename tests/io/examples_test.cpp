@@ -18,17 +18,22 @@ RunResult run_example(const std::string& name, std::vector<std::string> sets) {
 }
 
 TEST(Examples, ParallelStripsCurveTheWholeSheetPerpendicularStripsDoNot) {
+  // exp3 as shipped; exp2 held across at full width (no narrowing), so nothing along its strips
+  // is mismatched and it must stay flat. exp2 as shipped (narrowed, creased) needs 41 x 41 to
+  // resolve its creases: tests/slow/exp3_64_test.cpp compares the two there.
   const std::vector<std::string> coarse = {"sheet.resolution=[21,21]"};
-  const RunResult perpendicular = run_example("exp2_perpendicular.json", coarse);
+  const RunResult perpendicular = run_example(
+      "exp2_perpendicular.json", {"sheet.resolution=[21,21]", "protocol.0.lambda=[1.5,1]"});
   const RunResult parallel = run_example("exp3_parallel.json", coarse);
   ASSERT_TRUE(perpendicular.solve.converged) << perpendicular.solve.message;
   ASSERT_TRUE(parallel.solve.converged) << parallel.solve.message;
   const double size = 0.2;
-  // Parallel strips: global curvature, height a sizeable fraction of the sheet (measured 70 mm
-  // at 21 x 21 and 66 mm at 41 x 41).
+  // Parallel strips: global curvature, height a sizeable fraction of the sheet (measured 82 mm
+  // at 21 x 21 and 52 mm at 41 x 41).
   EXPECT_GT(parallel.shape.height, 0.15 * size);
+  EXPECT_GT(parallel.shape.global_height, 0.15 * size);
   EXPECT_GT(parallel.shape.height, 3.0 * perpendicular.shape.height);
-  // Perpendicular strips: the sheet stays nearly flat (below 1 % of its size).
+  // Perpendicular strips with no mismatch along them: flat (below 1 % of the size).
   EXPECT_LT(perpendicular.shape.height, 0.01 * size);
 }
 

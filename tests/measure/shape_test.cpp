@@ -1,7 +1,10 @@
 // Shape summaries.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 
 #include "membra/measure/shape.hpp"
 
@@ -31,6 +34,49 @@ TEST(Shape, SymmetricBumpHeightIsItsPeak) {
   const ShapeSummary s = summarize_shape(x);
   EXPECT_NEAR(s.height, 0.2, 1e-12);
   EXPECT_NEAR(s.normal.z(), 1.0, 1e-12);
+}
+
+TEST(Shape, FoldsOnASaddleAreSplitFromItsGlobalShape) {
+  // z = h (u^2 - v^2) + a sin(8 pi v) on a 2 x 2 sheet, tilted. The window is a disk of radius
+  // 2/16 on the paper, whose average of a quadric is the quadric (the u^2 and v^2 terms gain the
+  // same constant) and of the corrugation (k R = pi) is 2 J1(pi)/pi = 0.181 of it: the global
+  // height is the saddle's 2h, the folds 0.819 of the corrugation (rms a/sqrt 2).
+  const int n = 81;
+  const double h = 0.05, a = 0.01;
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.3, Vec3(1, 2, 0).normalized()).matrix();
+  Points x(3, n * n), paper(3, n * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = -1.0 + 2.0 * i / (n - 1), v = -1.0 + 2.0 * j / (n - 1);
+      paper.col(j * n + i) = Vec3(u, v, 0.0);
+      x.col(j * n + i) =
+          tilt * Vec3(u, v, h * (u * u - v * v) + a * std::sin(8.0 * std::numbers::pi * v));
+    }
+  const ShapeSummary s = summarize_shape(x, paper);
+  EXPECT_NEAR(s.global_height, 2.0 * h, 0.1 * 2.0 * h);
+  EXPECT_NEAR(s.fold_rms, 0.819 * a / std::sqrt(2.0), 0.1 * a);
+  EXPECT_GT(s.height, s.global_height);
+  // Without paper positions there is no split.
+  EXPECT_EQ(summarize_shape(x).global_height, 0.0);
+}
+
+TEST(Shape, ARolledTubeIsGlobalNotFolded) {
+  // A sheet rolled once round a cylinder of radius R: averaging over 1/16 of its length keeps
+  // the tube (its diameter shrinks by the window's sinc, under 2 %).
+  const int n = 65;
+  const double length = 0.2, radius = length / (2.0 * std::numbers::pi);
+  Points x(3, n * n), paper(3, n * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = length * i / (n - 1), v = length * j / (n - 1);
+      paper.col(j * n + i) = Vec3(u, v, 0.0);
+      const double phi = u / radius;
+      x.col(j * n + i) = Vec3(radius * std::sin(phi), v, radius * (1.0 - std::cos(phi)));
+    }
+  const ShapeSummary s = summarize_shape(x, paper);
+  EXPECT_NEAR(s.height, 2.0 * radius, 0.01 * radius);
+  EXPECT_GT(s.global_height, 0.95 * s.height);
+  EXPECT_LT(s.fold_rms, 0.05 * radius);
 }
 
 }  // namespace

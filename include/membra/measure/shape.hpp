@@ -1,5 +1,6 @@
 #pragma once
-// Summaries of a form: how far it rises out of its best-fit plane, its bounding box.
+// Summaries of a form: how far it rises out of its best-fit plane, its bounding box, and how
+// much of that rise is the global shape and how much local folding.
 #include "membra/geometry/vec.hpp"
 
 namespace membra {
@@ -9,10 +10,21 @@ struct ShapeSummary {
   double z_range = 0.0;  // max z - min z, m
   Vec3 bbox_min = Vec3::Zero(), bbox_max = Vec3::Zero();  // m
   Vec3 normal = Vec3::UnitZ();  // normal of the least-squares plane (smallest principal axis)
+  // The rise split by scale, over each particle's neighbourhood on the paper (the particles
+  // within 1/16 of the sheet's size, a window 1/8 of the sheet across): the neighbourhoods' mean
+  // positions are the global form; a particle's distance from its neighbourhood's least-squares
+  // plane is its fold. Zero when no paper positions are given.
+  double global_height = 0.0;  // `height` of the global form, m
+  double fold_rms = 0.0;       // rms of the particles' folds, m
+  double fold_max = 0.0;       // largest fold, m
 };
 
 // Shape summary of a point set (3 x N, N >= 1). The best-fit plane makes `height` independent of
-// how the released sheet happens to lie in space.
-ShapeSummary summarize_shape(const Points& x);
+// how the released sheet happens to lie in space. `paper`, when given (3 x N, the particles'
+// positions in the flat sheet), defines the neighbourhoods of the global/fold split.
+ShapeSummary summarize_shape(const Points& x, const Points& paper = Points());
+
+// Extent of x along the normal of its least-squares plane (that normal is returned in `normal`).
+double height_over_best_plane(const Points& x, Vec3* normal = nullptr);
 
 }  // namespace membra
