@@ -32,8 +32,14 @@ struct Neighbourhoods {
   Eigen::VectorXd fold;
 };
 
-Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double radius) {
+Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double radius,
+                                    double size) {
   const auto n = x.cols();
+  // A window holds about n pi / 256 particles (radius size/16); a few hundred describe its mean
+  // and plane as well as all of them, so big sheets take every stride-th one (index order
+  // within a bucket is row order on the grid: an even thinning).
+  const double expected = static_cast<double>(n) * radius * radius * 3.14159 / (size * size);
+  const size_t stride = std::max<size_t>(1, static_cast<size_t>(expected / 400.0));
   const Vec3 lo = paper.rowwise().minCoeff();
   auto cell = [&](const Vec3& p) {
     return std::pair<long, long>{std::lround(std::floor((p.x() - lo.x()) / radius)),
@@ -55,12 +61,16 @@ Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double
       for (long di = -1; di <= 1; ++di) {
         const auto it = buckets.find(key(i + di, j + dj));
         if (it == buckets.end()) continue;
-        for (Eigen::Index q : it->second)
+        const std::vector<Eigen::Index>& bucket = it->second;
+        for (size_t k = 0; k < bucket.size(); k += stride) {
+          const Eigen::Index q = bucket[k];
           if ((paper.col(q) - paper.col(p)).head<2>().squaredNorm() <= r2) near.push_back(q);
+        }
       }
+    if (near.empty()) near.push_back(p);
     Vec3 mean = Vec3::Zero();
     for (Eigen::Index q : near) mean += x.col(q);
-    mean /= static_cast<double>(near.size());  // >= 1: p itself
+    mean /= static_cast<double>(near.size());
     out.mean.col(p) = mean;
     if (near.size() < 3) continue;
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
@@ -84,7 +94,7 @@ ShapeSummary summarize_shape(const Points& x, const Points& paper) {
   const Vec3 extent = paper.rowwise().maxCoeff() - paper.rowwise().minCoeff();
   const double size = std::max(extent.x(), extent.y());
   if (!(size > 0.0)) return s;
-  const Neighbourhoods near = paper_neighbourhoods(x, paper, size / 16.0);
+  const Neighbourhoods near = paper_neighbourhoods(x, paper, size / 16.0, size);
   s.global_height = height_over_best_plane(near.mean);
   s.fold_rms = std::sqrt(near.fold.squaredNorm() / static_cast<double>(x.cols()));
   s.fold_max = near.fold.maxCoeff();

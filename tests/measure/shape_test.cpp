@@ -36,12 +36,15 @@ TEST(Shape, SymmetricBumpHeightIsItsPeak) {
   EXPECT_NEAR(s.normal.z(), 1.0, 1e-12);
 }
 
-TEST(Shape, FoldsOnASaddleAreSplitFromItsGlobalShape) {
+class ShapeSplit : public ::testing::TestWithParam<int> {};
+
+// On 81 x 81 every neighbour counts; on 257 x 257 (800 per window) every second one.
+TEST_P(ShapeSplit, FoldsOnASaddleAreSplitFromItsGlobalShape) {
   // z = h (u^2 - v^2) + a sin(8 pi v) on a 2 x 2 sheet, tilted. The window is a disk of radius
   // 2/16 on the paper, whose average of a quadric is the quadric (the u^2 and v^2 terms gain the
   // same constant) and of the corrugation (k R = pi) is 2 J1(pi)/pi = 0.181 of it: the global
   // height is the saddle's 2h, the folds 0.819 of the corrugation (rms a/sqrt 2).
-  const int n = 81;
+  const int n = GetParam();
   const double h = 0.05, a = 0.01;
   const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.3, Vec3(1, 2, 0).normalized()).matrix();
   Points x(3, n * n), paper(3, n * n);
@@ -59,6 +62,8 @@ TEST(Shape, FoldsOnASaddleAreSplitFromItsGlobalShape) {
   // Without paper positions there is no split.
   EXPECT_EQ(summarize_shape(x).global_height, 0.0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Grids, ShapeSplit, ::testing::Values(81, 257));
 
 TEST(Shape, ARolledTubeIsGlobalNotFolded) {
   // A sheet rolled once round a cylinder of radius R: averaging over 1/16 of its length keeps
