@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <unordered_map>
 #include <vector>
 
@@ -38,7 +39,8 @@ Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double
   // A window holds about n pi / 256 particles (radius size/16); a few hundred describe its mean
   // and plane as well as all of them, so big sheets take every stride-th one (index order
   // within a bucket is row order on the grid: an even thinning).
-  const double expected = static_cast<double>(n) * radius * radius * 3.14159 / (size * size);
+  const double expected =
+      static_cast<double>(n) * radius * radius * std::numbers::pi / (size * size);
   const size_t stride = std::max<size_t>(1, static_cast<size_t>(expected / 400.0));
   const Vec3 lo = paper.rowwise().minCoeff();
   auto cell = [&](const Vec3& p) {
