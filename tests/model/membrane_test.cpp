@@ -23,8 +23,7 @@ TEST(Membrane, StretchIsAffineAndInEquilibriumOnAFullGrid) {
 }
 
 // A disk is held all round its rim (not only where it touches the grid's edges), and a hole's
-// rim is left free: the stretch of a disk with a hole is affine and in equilibrium, as on a
-// full rectangle.
+// rim is left free: the stretch of a disk with a hole is affine, its interior in equilibrium.
 TEST(Membrane, TheFrameHoldsADisksRimAndNotAHolesRim) {
   const double r = 0.025;
   auto keep = [r](double x, double y) {
