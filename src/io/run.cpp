@@ -29,9 +29,11 @@ struct FrameRecorder {
 
 // Solves for equilibrium with the scene's solver: FIRE for "static", shifted Newton for
 // "newton", damped time stepping otherwise.
+// `tolerance` < 0: the scene's.
 SolveReport solve(const Scene& scene, const PreparedScene& p, State& s, const std::string& stage,
                   const std::function<void(const Progress&)>& progress,
-                  FrameRecorder* recorder = nullptr) {
+                  FrameRecorder* recorder = nullptr, double tolerance = -1.0) {
+  if (tolerance < 0.0) tolerance = scene.simulation.tolerance;
   auto staged = [&](const Progress& pr) {
     if (!progress) return;
     Progress q = pr;
@@ -41,14 +43,14 @@ SolveReport solve(const Scene& scene, const PreparedScene& p, State& s, const st
   const Model& m = p.membrane.sheet.model;
   if (scene.simulation.solver == "newton") {
     NewtonOptions o;
-    o.tolerance = scene.simulation.tolerance;
+    o.tolerance = tolerance;
     o.force_scale = p.force_scale;
     o.progress = staged;
     return solve_newton(m, s, o);
   }
   if (scene.simulation.solver == "static") {
     StaticOptions o;
-    o.tolerance = scene.simulation.tolerance;
+    o.tolerance = tolerance;
     o.force_scale = p.force_scale;
     o.max_iterations = scene.simulation.max_iterations;
     o.progress = staged;
@@ -104,7 +106,11 @@ StepReport follow_path(const Scene& scene, const PreparedScene& p, State& s,
   for (int k = 1; k <= increments && !rep.solve.diverged; ++k) {
     set(static_cast<double>(k) / increments);
     const std::string stage = name + " " + std::to_string(k) + "/" + std::to_string(increments);
-    accumulate(rep.solve, solve(scene, p, s, stage, progress));
+    // Intermediate increments only carry the sheet along the path: a looser tolerance there
+    // (simulation.path_tolerance) saves their slow tails; the last one is solved in full.
+    const double tolerance =
+        k < increments ? scene.simulation.path_tolerance : scene.simulation.tolerance;
+    accumulate(rep.solve, solve(scene, p, s, stage, progress, nullptr, tolerance));
     recorder.record(p.membrane.sheet.model, s.x, thickness);
   }
   return rep;

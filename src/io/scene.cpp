@@ -42,11 +42,17 @@ const std::vector<std::string_view> kCurvatureMapKeys = {"step", "K", "increment
 const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
 const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
-const std::vector<std::string_view> kSimulationKeys = {"solver",    "K",
-                                                       "G",         "T",
-                                                       "D",         "spring_damping",
-                                                       "steps",     "max_iterations",
-                                                       "tolerance", "stop_when_converged"};
+const std::vector<std::string_view> kSimulationKeys = {"solver",
+                                                       "K",
+                                                       "G",
+                                                       "T",
+                                                       "D",
+                                                       "spring_damping",
+                                                       "steps",
+                                                       "max_iterations",
+                                                       "tolerance",
+                                                       "stop_when_converged",
+                                                       "path_tolerance"};
 
 // Largest grid we accept; the robustness issue adds a memory-based limit.
 constexpr long kMaxNodesPerSide = 4096;
@@ -193,6 +199,8 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   sim.steps = s.integer("steps", sim.steps, 0, 1'000'000'000L);
   sim.max_iterations = s.integer("max_iterations", sim.max_iterations, 0, 1'000'000'000L);
   sim.tolerance = s.number("tolerance", sim.tolerance, Bounds{0.0, 1.0, true});
+  sim.path_tolerance =
+      std::max(sim.tolerance, s.number("path_tolerance", sim.tolerance, Bounds{0.0, 1.0, true}));
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
 }
 

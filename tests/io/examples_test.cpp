@@ -61,6 +61,17 @@ TEST(Examples, AnEllipticalPatternGivesABowl) {
   EXPECT_GT(r.curvature.positive, 2.0 * -r.curvature.negative);
   EXPECT_GT(r.shape.height, 0.2 * 0.2);  // a bowl, not a wrinkled plane
   EXPECT_TRUE(r.stability.stable) << r.stability.message;
+
+  // The bowl is unique: releasing with loosely solved intermediate increments
+  // (simulation.path_tolerance) reaches the same form, to the full tolerance, with fewer
+  // iterations (measured: 62 375 against 130 700, height and total K equal to 1e-5).
+  const RunResult loose = run_example(
+      "synclastic_ellipse.json", {"sheet.resolution=[21,21]", "simulation.path_tolerance=1e-4"});
+  ASSERT_TRUE(loose.solve.converged) << loose.solve.message;
+  EXPECT_LE(loose.solve.residual_relative, 1e-6);
+  EXPECT_LT(loose.solve.iterations, 0.7 * static_cast<double>(r.solve.iterations));
+  EXPECT_NEAR(loose.shape.height, r.shape.height, 1e-3 * r.shape.height);
+  EXPECT_NEAR(loose.curvature.total, r.curvature.total, 1e-3 * r.curvature.total);
 }
 
 TEST(Examples, AHyperbolicPatternGivesASaddle) {

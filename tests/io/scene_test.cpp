@@ -54,6 +54,18 @@ TEST(Scene, ConvertsToSI) {
   ASSERT_EQ(s.pins.size(), 1u);
 }
 
+TEST(Scene, PathToleranceDefaultsToTheToleranceAndIsNeverTighter) {
+  json j = minimal();
+  j["simulation"]["tolerance"] = 1e-8;
+  EXPECT_DOUBLE_EQ(parse_scene(j).simulation.path_tolerance, 1e-8);
+  j["simulation"]["path_tolerance"] = 1e-4;
+  EXPECT_DOUBLE_EQ(parse_scene(j).simulation.path_tolerance, 1e-4);
+  j["simulation"]["path_tolerance"] = 1e-10;  // tighter than the final solve: no sense in it
+  EXPECT_DOUBLE_EQ(parse_scene(j).simulation.path_tolerance, 1e-8);
+  j["simulation"]["path_tolerance"] = -1.0;
+  EXPECT_EQ(error_at(j), "/simulation/path_tolerance");
+}
+
 TEST(Scene, MaterialPresetsCanBePartlyOverridden) {
   json j = minimal();
   j["materials"] = {{"latex", {{"thickness", 1.0}}}};

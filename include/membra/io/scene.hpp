@@ -32,6 +32,11 @@ struct SimulationSpec {
   long steps = 10000;             // time steps of a dynamic solver
   long max_iterations = 500000;   // iterations of the static solver
   double tolerance = 1e-6;        // relative to k_stretch x grid spacing
+  // Tolerance of the intermediate increments of a path (release, grow, ...); the last increment
+  // is solved to `tolerance`. Defaults to `tolerance` and is never tighter. Looser values save the
+  // slow tails of the intermediate solves (2-3x) but can move the sheet onto another branch
+  // (docs/performance.md, "Looser paths").
+  double path_tolerance = 1e-6;
   bool stop_when_converged = true;
 
   // True for the equilibrium solvers (static, newton), false for time stepping.
@@ -66,7 +71,7 @@ struct ProtocolStep {
   PatternPtr pattern;
   nlohmann::json pattern_json;  // as written, for stencil export
   Material resin;
-  int resin_side = +1;  // +1 top, -1 bottom
+  int resin_side = +1;   // +1 top, -1 bottom
   bool bilayer = false;  // resin on that face only: the composite curls on release
   // release, grow, add_springs
   int increments = 10;           // static solver: steps of the quasi-static path
