@@ -3,6 +3,10 @@
 // as a smoke test only (ctest label "bench", a few iterations); docs/performance.md has numbers.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/benchmark_problem.hpp"
@@ -31,6 +35,38 @@ void BM_ForcePassP(benchmark::State& state) {
   set_per_item(state, p.model.springs.size());  // ns per spring
 }
 BENCHMARK(BM_ForcePassP)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
+
+// The same pass with positions and forces as a structure of arrays (x[], y[], z[]), springs only,
+// single-threaded: the layout candidate of the speed issue, measured against membra's
+// column-per-particle layout above (docs/performance.md: no gain; a spring's two ends are
+// gathered either way, and three coordinates side by side share a cache line).
+void BM_ForcePassSoA(benchmark::State& state) {
+  const auto p = membra::make_benchmark_problem(static_cast<int>(state.range(0)));
+  const membra::Springs& s = p.model.springs;
+  const int n = p.model.num_particles();
+  std::vector<double> x(p.start.x.row(0).begin(), p.start.x.row(0).end()),
+      y(p.start.x.row(1).begin(), p.start.x.row(1).end()),
+      z(p.start.x.row(2).begin(), p.start.x.row(2).end());
+  std::vector<double> fx(static_cast<size_t>(n)), fy(fx.size()), fz(fx.size());
+  for (auto _ : state) {
+    std::fill(fx.begin(), fx.end(), 0.0);
+    std::fill(fy.begin(), fy.end(), 0.0);
+    std::fill(fz.begin(), fz.end(), 0.0);
+    for (int i = 0; i < s.size(); ++i) {
+      const auto a = static_cast<size_t>(s.a[i]), b = static_cast<size_t>(s.b[i]);
+      const double dx = x[b] - x[a], dy = y[b] - y[a], dz = z[b] - z[a];
+      const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double c = s.stiffness[i] * (1.0 - s.rest_length[i] / l);
+      fx[a] += c * dx, fy[a] += c * dy, fz[a] += c * dz;
+      fx[b] -= c * dx, fy[b] -= c * dy, fz[b] -= c * dz;
+    }
+    benchmark::DoNotOptimize(fx.data());
+    benchmark::DoNotOptimize(fy.data());
+    benchmark::DoNotOptimize(fz.data());
+  }
+  set_per_item(state, s.size());  // ns per spring
+}
+BENCHMARK(BM_ForcePassSoA)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
 
 // One force pass over a latex sheet with plate bending.
 void BM_ForcePassSheet(benchmark::State& state) {
