@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "membra/solve/bench.hpp"
+#include "membra/process/bench.hpp"
 #include "membra/version.hpp"
 
 namespace membra::cli {

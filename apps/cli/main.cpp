@@ -7,11 +7,11 @@
 
 #include "bench_command.hpp"
 #include "design_command.hpp"
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/report.hpp"
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/process/run.hpp"
 #include "membra/render/run_outputs.hpp"
 #include "membra/version.hpp"
 #include "membra/view/view_script.hpp"

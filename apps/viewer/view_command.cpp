@@ -4,7 +4,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/view/session_files.hpp"

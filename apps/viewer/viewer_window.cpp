@@ -15,10 +15,10 @@
 #include <cstdio>
 #include <optional>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
+#include "membra/core/units.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/scene.hpp"
-#include "membra/model/units.hpp"
 #include "membra/view/flat_view.hpp"
 #include "membra/view/picking.hpp"
 #include "membra/view/session_files.hpp"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "membra/model/units.hpp"
+#include "membra/core/units.hpp"
 
 namespace membra {
 

@@ -1,13 +1,10 @@
 #include "membra/design/target_surface.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 
-#include "membra/io/input_error.hpp"
-#include "membra/io/obj.hpp"
+#include "membra/core/units.hpp"
 #include "membra/model/formula.hpp"
-#include "membra/model/units.hpp"
 
 namespace membra {
 
@@ -123,16 +120,10 @@ TargetSurface make_target(const TargetSpec& spec) {
       if (!std::isfinite(t.x(2, p)))
         throw std::invalid_argument("the height formula is not finite everywhere on the patch");
   } else if (spec.kind == "obj") {
-    std::ifstream in(spec.obj_file);
-    if (!in) throw std::invalid_argument(spec.obj_file + ": cannot open the OBJ file");
-    ObjMesh m;
-    try {
-      m = read_obj(in, spec.obj_file);
-    } catch (const InputError& e) {
-      throw std::invalid_argument(e.what());
-    }
-    t.x = m.x;
-    t.triangles = m.triangles;
+    if (spec.obj_triangles.empty())
+      throw std::invalid_argument(spec.obj_file + ": the OBJ mesh has no face");
+    t.x = spec.obj_x;
+    t.triangles = spec.obj_triangles;
   } else {
     throw std::invalid_argument("unknown target kind '" + spec.kind +
                                 "' (cap, saddle, cylinder, height_field, obj)");

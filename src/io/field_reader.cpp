@@ -5,9 +5,9 @@
 #include <memory>
 #include <stdexcept>
 
+#include "membra/core/units.hpp"
 #include "membra/io/image.hpp"
 #include "membra/io/json_reader.hpp"
-#include "membra/model/units.hpp"
 
 namespace membra {
 namespace {

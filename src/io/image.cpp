@@ -7,7 +7,7 @@
 
 #include <stb_image.h>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
 
 namespace membra {
 

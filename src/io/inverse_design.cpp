@@ -3,14 +3,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
+#include "membra/core/units.hpp"
 #include "membra/io/json_reader.hpp"
+#include "membra/io/obj.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/measure/curvature.hpp"
-#include "membra/model/units.hpp"
 #include "membra/solve/solve_report.hpp"
 
 namespace membra {
@@ -54,6 +56,11 @@ void parse_target(const json& j, const std::string& ptr, const std::filesystem::
   } else {
     const JsonObject o(body, p, {"file"});
     t.obj_file = (base_dir / o.string("file", std::nullopt)).string();
+    std::ifstream in(t.obj_file);
+    if (!in) throw InputError(o.pointer("file"), t.obj_file + ": cannot open the OBJ file");
+    const ObjMesh mesh = read_obj(in, t.obj_file);
+    t.obj_x = mesh.x;
+    t.obj_triangles = mesh.triangles;
   }
   try {
     (void)make_target(t);  // fail now, naming the field, not after minutes of simulation

@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "membra/io/input_error.hpp"
-#include "membra/model/units.hpp"
+#include "membra/core/input_error.hpp"
+#include "membra/core/units.hpp"
 
 namespace membra {
 

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "membra/core/units.hpp"
 #include "membra/io/image.hpp"
 #include "membra/io/json_reader.hpp"
-#include "membra/model/units.hpp"
 
 namespace membra {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "membra/model/units.hpp"
+#include "membra/core/units.hpp"
 
 namespace membra {
 

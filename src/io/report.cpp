@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-#include "membra/model/units.hpp"
+#include "membra/core/units.hpp"
 #include "membra/version.hpp"
 
 namespace membra {

@@ -5,10 +5,10 @@
 #include <sstream>
 #include <string>
 
+#include "membra/core/units.hpp"
 #include "membra/io/field_reader.hpp"
 #include "membra/io/json_reader.hpp"
 #include "membra/io/pattern_reader.hpp"
-#include "membra/model/units.hpp"
 #include "membra/solve/integrator.hpp"
 
 namespace membra {
@@ -557,21 +557,6 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
   } catch (const InputError& e) {
     throw InputError(e.where().empty() ? name : name + ": " + e.where(), e.detail());
   }
-}
-
-PatternPtr scene_pattern(const Scene& scene) {
-  std::vector<PatternPtr> parts;
-  for (const auto& step : scene.protocol)
-    if (step.kind == ProtocolStep::Kind::impregnate) parts.push_back(step.pattern);
-  if (parts.empty()) return nullptr;
-  return parts.size() == 1 ? parts[0] : make_union(parts);
-}
-
-Box2 scene_frame(const Scene& scene) {
-  Vec2 stretch(1.0, 1.0);
-  for (const auto& step : scene.protocol)
-    if (step.kind == ProtocolStep::Kind::stretch) stretch = stretch.cwiseProduct(step.lambda);
-  return {Vec2::Zero(), Vec2(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height)};
 }
 
 std::map<std::string, std::vector<std::string>> scene_known_keys() {

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "membra/model/units.hpp"
+#include "membra/core/units.hpp"
 
 namespace membra {
 namespace {

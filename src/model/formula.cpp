@@ -5,7 +5,7 @@
 
 #include <muParser.h>
 
-#include "membra/model/units.hpp"
+#include "membra/core/units.hpp"
 
 namespace membra {
 

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "membra/model/units.hpp"
+#include "membra/core/units.hpp"
 
 namespace membra {
 

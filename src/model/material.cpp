@@ -1,6 +1,6 @@
 #include "membra/model/material.hpp"
 
-#include "membra/model/units.hpp"
+#include "membra/core/units.hpp"
 
 namespace membra {
 

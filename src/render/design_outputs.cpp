@@ -1,10 +1,10 @@
 #include "membra/render/design_outputs.hpp"
 
+#include "membra/core/units.hpp"
 #include "membra/geometry/orbit_camera.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/report.hpp"
 #include "membra/io/scene.hpp"
-#include "membra/model/units.hpp"
 #include "membra/render/renderer.hpp"
 #include "membra/render/run_outputs.hpp"
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "membra/core/units.hpp"
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/stress.hpp"
-#include "membra/model/units.hpp"
 
 namespace membra {
 

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/ply.hpp"

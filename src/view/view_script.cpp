@@ -6,8 +6,8 @@
 #include <map>
 #include <sstream>
 
-#include "membra/io/input_error.hpp"
-#include "membra/model/units.hpp"
+#include "membra/core/input_error.hpp"
+#include "membra/core/units.hpp"
 
 namespace membra {
 namespace {

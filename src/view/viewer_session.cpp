@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "membra/core/units.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/pins.hpp"
-#include "membra/model/units.hpp"
 #include "membra/solve/dynamics.hpp"
 
 namespace membra {

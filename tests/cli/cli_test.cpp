@@ -12,8 +12,8 @@
 #include "test_util.hpp"
 
 #include "membra/io/report.hpp"
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 namespace {

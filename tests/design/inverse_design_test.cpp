@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
 #include "membra/io/inverse_design.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/scene.hpp"

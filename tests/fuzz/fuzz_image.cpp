@@ -2,8 +2,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "membra/core/input_error.hpp"
 #include "membra/io/image.hpp"
-#include "membra/io/input_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

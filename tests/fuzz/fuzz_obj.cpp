@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
 #include "membra/io/obj.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -8,8 +8,8 @@
 
 #include "membra/io/obj.hpp"
 #include "membra/io/report.hpp"
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 namespace {

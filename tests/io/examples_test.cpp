@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/model/bilayer.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 namespace {

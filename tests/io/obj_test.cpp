@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
 #include "membra/io/obj.hpp"
 
 namespace membra {

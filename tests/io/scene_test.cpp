@@ -7,9 +7,9 @@
 
 #include "test_util.hpp"
 
-#include "membra/io/memory_estimate.hpp"
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/process/memory_estimate.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 namespace {

@@ -7,8 +7,8 @@
 
 #include "membra/io/inverse_design.hpp"
 #include "membra/io/pattern_reader.hpp"
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 namespace {

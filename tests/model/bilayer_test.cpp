@@ -4,12 +4,12 @@
 
 #include <gtest/gtest.h>
 
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/model/bilayer.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/model/hinge_kernel.hpp"
+#include "membra/process/run.hpp"
 #include "membra/solve/newton_solver.hpp"
 
 namespace membra {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/model/curvature_map.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "membra/io/run.hpp"
+#include "membra/core/units.hpp"
 #include "membra/io/scene.hpp"
-#include "membra/model/units.hpp"
+#include "membra/process/run.hpp"
 #include "membra/view/color_field.hpp"
 #include "membra/view/viewer_session.hpp"
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "membra/core/vec.hpp"
 #include "membra/geometry/triangulation.hpp"
-#include "membra/geometry/vec.hpp"
 
 namespace membra {
 
@@ -14,8 +14,10 @@ struct TargetSpec {
   double size = 0.15;        // m: footprint diameter (cap) or side (the others)
   double height = 0.0225;    // m: the patch's rise (cap, saddle: corners to centre, cylinder)
   std::string formula;       // height_field: z(x, y) in mm, x and y in mm from the centre
-  std::string obj_file;      // obj: the mesh (mm)
-  int resolution = 41;       // vertices along the side of the analytic patches
+  std::string obj_file;      // obj: where the mesh came from (for messages)
+  Points obj_x;              // obj: the mesh's vertices, m (read by io/obj.hpp)
+  std::vector<Triangle> obj_triangles;
+  int resolution = 41;  // vertices along the side of the analytic patches
 };
 
 struct TargetSurface {
@@ -28,7 +30,7 @@ struct TargetSurface {
 };
 
 // Builds the target. Throws std::invalid_argument naming what is wrong (a cap higher than its
-// radius, a formula that does not parse, an OBJ that cannot be read).
+// radius, a formula that does not parse, an OBJ mesh without faces).
 TargetSurface make_target(const TargetSpec& spec);
 
 // Area of a triangle mesh, m^2.

@@ -5,7 +5,7 @@
 #include <functional>
 #include <vector>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 
 namespace membra {
 

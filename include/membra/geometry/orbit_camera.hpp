@@ -3,7 +3,7 @@
 // renders use the same matrices, and picking casts rays through them. Pure math, no OpenGL.
 #include <Eigen/Core>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 
 namespace membra {
 

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 #include "membra/model/formula.hpp"
 
 namespace membra {

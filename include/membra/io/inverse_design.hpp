@@ -16,7 +16,7 @@
 #include "membra/design/shape_distance.hpp"
 #include "membra/design/stencil_layout.hpp"
 #include "membra/design/target_surface.hpp"
-#include "membra/io/run.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "membra/io/input_error.hpp"
+#include "membra/core/input_error.hpp"
 
 namespace membra {
 

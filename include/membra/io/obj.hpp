@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "membra/core/vec.hpp"
 #include "membra/geometry/triangulation.hpp"
-#include "membra/geometry/vec.hpp"
 
 namespace membra {
 

@@ -2,7 +2,7 @@
 // report.json: the numbers of a run, each with its unit (DESIGN.md section 8).
 #include <nlohmann/json.hpp>
 
-#include "membra/io/run.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 

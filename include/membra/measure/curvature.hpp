@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "membra/core/vec.hpp"
 #include "membra/geometry/grid_sheet.hpp"
 #include "membra/geometry/triangulation.hpp"
-#include "membra/geometry/vec.hpp"
 
 namespace membra {
 

@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
+#include "membra/core/vec.hpp"
 #include "membra/geometry/grid_sheet.hpp"
-#include "membra/geometry/vec.hpp"
 
 namespace membra {
 

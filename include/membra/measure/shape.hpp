@@ -1,7 +1,7 @@
 #pragma once
 // Summaries of a form: how far it rises out of its best-fit plane, its bounding box, and how
 // much of that rise is the global shape and how much local folding.
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 
 namespace membra {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 #include "membra/model/model.hpp"
 
 namespace membra {

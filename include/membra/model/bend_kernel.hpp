@@ -7,7 +7,7 @@
 // (a straight line) and cheap. It grows without bound as the line folds back (psi -> pi).
 #include <array>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 
 namespace membra {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 
 namespace membra {
 

@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 
 namespace membra {
 

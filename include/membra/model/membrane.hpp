@@ -1,7 +1,7 @@
 #pragma once
 // The membrane being processed: its sheet and state, and what the protocol has done to it so
 // far (frame, resin). The protocol steps of DESIGN.md section 2 are small functions of it; the
-// solves between them are the caller's (see io/run.hpp).
+// solves between them are the caller's (see process/run.hpp).
 #include <cstdint>
 #include <vector>
 

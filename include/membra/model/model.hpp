@@ -4,7 +4,7 @@
 // solvers only change the state.
 #include <vector>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 #include "membra/model/bending.hpp"
 #include "membra/model/hinges.hpp"
 #include "membra/model/springs.hpp"

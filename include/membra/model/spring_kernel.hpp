@@ -1,7 +1,7 @@
 #pragma once
 // One spring's energy and force: the single kernel that every force pass, energy sum and
 // measure uses, so energies and forces cannot disagree.
-#include "membra/geometry/vec.hpp"
+#include "membra/core/vec.hpp"
 
 namespace membra {
 

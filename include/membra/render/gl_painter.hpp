@@ -7,8 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "membra/core/vec.hpp"
 #include "membra/geometry/triangulation.hpp"
-#include "membra/geometry/vec.hpp"
 #include "membra/measure/colormap.hpp"
 
 namespace membra {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "membra/core/vec.hpp"
 #include "membra/geometry/triangulation.hpp"
-#include "membra/geometry/vec.hpp"
 #include "membra/measure/colormap.hpp"
 #include "membra/model/pattern.hpp"
 #include "membra/render/gl_painter.hpp"

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "membra/io/output_set.hpp"
-#include "membra/io/run.hpp"
+#include "membra/process/run.hpp"
 
 namespace membra {
 

@@ -1,9 +1,10 @@
 #pragma once
 // What every solver reports about a run.
-#include <chrono>
 #include <string>
 
-#include "membra/geometry/vec.hpp"
+#include "membra/core/progress.hpp"
+#include "membra/core/stopwatch.hpp"
+#include "membra/core/vec.hpp"
 
 namespace membra {
 
@@ -21,28 +22,8 @@ struct SolveReport {
 // Diagonal of the bounding box of the positions, m: a sheet 100x its initial extent has blown up.
 double sheet_extent(const Points& x);
 
-// Wall time since construction, for the reports.
-class Stopwatch {
- public:
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
 // "NAME: converged after N iterations, residual R (tolerance T)".
 std::string summary_message(const std::string& name, const SolveReport& r, double tolerance,
                             const char* unit = "iterations");
-
-// Progress of a long run, passed to a callback every so often.
-struct Progress {
-  std::string stage;  // what is being solved ("release 3/10"), set by the caller of a solver
-  long iteration = 0;
-  long max_iterations = 0;
-  double residual_relative = 0.0;
-  double wall_seconds = 0.0;
-};
 
 }  // namespace membra

@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "membra/io/run.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/model/membrane.hpp"
+#include "membra/process/run.hpp"
 #include "membra/solve/static_solver.hpp"
 
 namespace membra {

@@ -1,7 +1,7 @@
 #pragma once
 // How much memory a scene will need, so a grid the machine cannot hold is refused before
 // anything is allocated (rather than failing, or swapping, half-way through a run).
-#include "membra/io/scene.hpp"
+#include "membra/process/scene.hpp"
 
 namespace membra {
 

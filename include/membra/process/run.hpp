@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "membra/io/scene.hpp"
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/shape.hpp"
 #include "membra/measure/stress.hpp"
 #include "membra/measure/stress_concentration.hpp"
 #include "membra/model/curvature_map.hpp"
 #include "membra/model/membrane.hpp"
+#include "membra/process/scene.hpp"
 #include "membra/solve/solve_report.hpp"
 #include "membra/solve/stability.hpp"
 

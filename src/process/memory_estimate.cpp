@@ -1,8 +1,10 @@
-#include "membra/io/memory_estimate.hpp"
+#include "membra/process/memory_estimate.hpp"
 
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "membra/core/input_error.hpp"
 
 namespace membra {
 

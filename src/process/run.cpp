@@ -1,7 +1,6 @@
-#include "membra/io/run.hpp"
+#include "membra/process/run.hpp"
 
-#include "membra/io/input_error.hpp"
-#include "membra/io/memory_estimate.hpp"
+#include "membra/core/input_error.hpp"
 #include "membra/measure/hole_edge.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/added_springs.hpp"
@@ -10,6 +9,7 @@
 #include "membra/model/forces.hpp"
 #include "membra/model/grow.hpp"
 #include "membra/model/pins.hpp"
+#include "membra/process/memory_estimate.hpp"
 #include "membra/solve/dynamics.hpp"
 #include "membra/solve/newton_solver.hpp"
 #include "membra/solve/static_solver.hpp"

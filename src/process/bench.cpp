@@ -1,4 +1,4 @@
-#include "membra/solve/bench.hpp"
+#include "membra/process/bench.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,20 @@
+#include "membra/process/scene.hpp"
+
+namespace membra {
+
+PatternPtr scene_pattern(const Scene& scene) {
+  std::vector<PatternPtr> parts;
+  for (const auto& step : scene.protocol)
+    if (step.kind == ProtocolStep::Kind::impregnate) parts.push_back(step.pattern);
+  if (parts.empty()) return nullptr;
+  return parts.size() == 1 ? parts[0] : make_union(parts);
+}
+
+Box2 scene_frame(const Scene& scene) {
+  Vec2 stretch(1.0, 1.0);
+  for (const auto& step : scene.protocol)
+    if (step.kind == ProtocolStep::Kind::stretch) stretch = stretch.cwiseProduct(step.lambda);
+  return {Vec2::Zero(), Vec2(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height)};
+}
+
+}  // namespace membra
