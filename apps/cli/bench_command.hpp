@@ -3,11 +3,13 @@
 #include <string>
 #include <vector>
 
+#include "membra/process/bench.hpp"
+
 namespace membra::cli {
 
 struct BenchArgs {
   std::vector<int> sizes{32, 64};
-  std::vector<std::string> solvers{"static", "dr_unit", "newton", "rk4"};
+  std::vector<std::string> solvers{kBenchSolvers.begin(), kBenchSolvers.end()};
   double budget = 60.0;
   bool json = false;
   std::string json_out;  // also write the JSON here, with the table on stdout

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "membra/io/inverse_design.hpp"
+#include "membra/io/design_reader.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/render/design_outputs.hpp"
 

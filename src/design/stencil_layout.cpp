@@ -20,7 +20,6 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
   const double cx = size.x() / nx, cy = size.y() / ny;  // cells fill the frame exactly
   Stencil s;
   std::vector<PatternPtr> parts;
-  nlohmann::json jparts = nlohmann::json::array();
   double resin = 0.0, total = 0.0;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
@@ -34,19 +33,22 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
       if (std::min(fx, fy) < w) continue;
       if (cx - fx < w || cy - fy < w) fx = cx, fy = cy;
       const Vec2 h(0.5 * fx, 0.5 * fy);
-      const std::vector<Vec2> square = {centre - h, Vec2(centre.x() + h.x(), centre.y() - h.y()),
-                                        centre + h, Vec2(centre.x() - h.x(), centre.y() + h.y())};
-      parts.push_back(make_polygon(square));
-      nlohmann::json pts = nlohmann::json::array();
-      for (const Vec2& p : square) pts.push_back({p.x() / units::mm, p.y() / units::mm});
-      jparts.push_back({{"polygon", {{"points", pts}}}});
+      std::array<Vec2, 4> square = {centre - h, Vec2(centre.x() + h.x(), centre.y() - h.y()),
+                                    centre + h, Vec2(centre.x() - h.x(), centre.y() + h.y())};
+      // In mm as a scene file holds it, so that the stencil simulated is the one written.
+      std::vector<Vec2> corners;
+      for (Vec2& p : square) {
+        p /= units::mm;
+        corners.push_back(p * units::mm);
+      }
+      parts.push_back(make_polygon(std::move(corners)));
+      s.squares.push_back(square);
       resin += fx * fy;
       ++s.pieces;
     }
   s.resin_share = total > 0.0 ? resin / total : 0.0;
   if (parts.empty()) return s;
   s.pattern = parts.size() == 1 ? parts[0] : make_union(parts);
-  s.json = parts.size() == 1 ? jparts[0] : nlohmann::json{{"union", jparts}};
   return s;
 }
 

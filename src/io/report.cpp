@@ -19,7 +19,7 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
   nlohmann::json j;
   j["membra_version"] = kVersion;
   j["scene"] = scene.name;
-  j["solver"] = scene.simulation.solver;
+  j["solver"] = std::string(solver_name(scene.simulation.solver));
   j["status"] = s.diverged ? "diverged" : (s.converged ? "converged" : "not_converged");
   j["message"] = s.message;
   j["converged"] = s.converged;

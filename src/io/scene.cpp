@@ -9,7 +9,6 @@
 #include "membra/io/field_reader.hpp"
 #include "membra/io/json_reader.hpp"
 #include "membra/io/pattern_reader.hpp"
-#include "membra/solve/integrator.hpp"
 
 namespace membra {
 namespace {
@@ -112,7 +111,7 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
                                 std::to_string(n));
     (k == 0 ? scene.grid.nx : scene.grid.ny) = static_cast<int>(n);
   }
-  // The homogenization (DESIGN.md section 3) is for square cells.
+  // The homogenization (docs/model.md, "Homogenization") is for square cells.
   const double hx = size[0] / (scene.grid.nx - 1), hy = size[1] / (scene.grid.ny - 1);
   if (std::abs(hx / hy - 1.0) > 0.01) {
     std::ostringstream msg;
@@ -185,9 +184,9 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   SimulationSpec& sim = scene.simulation;
   if (!top.has("simulation")) return;
   const JsonObject s = top.object("simulation", kSimulationKeys);
-  std::vector<std::string_view> solvers = integrator_names();
-  solvers.insert(solvers.begin(), {"static", "newton"});
-  sim.solver = s.string("solver", sim.solver, solvers);
+  const std::string solver =
+      s.string("solver", std::string(solver_name(sim.solver)), solver_names());
+  sim.solver = *solver_from_name(solver);
   if (s.has("K"))
     scene.sheet.stretch_stiffness =
         s.number("K", std::nullopt, Bounds::positive()) * units::N_per_mm;

@@ -9,51 +9,51 @@
 #include "membra/measure/curvature.hpp"
 #include "membra/model/benchmark_problem.hpp"
 #include "membra/model/forces.hpp"
-#include "membra/solve/dynamics.hpp"
-#include "membra/solve/newton_solver.hpp"
+#include "membra/solve/solver.hpp"
 #include "membra/solve/static_solver.hpp"
 
 namespace membra {
 
+namespace {
+
+// RK4 on the unit masses: the step at 60 % of its stability limit for the stiffest particle,
+// damping that critically damps the sheet's slowest bending-free mode.
+SolveReport run_damped_rk4(const BenchmarkProblem& p, int n, State& s, SolverSettings settings) {
+  const auto g = stiffness_scaled_masses(p.model, s.x);
+  const double omega_max = std::sqrt(*std::max_element(g.begin(), g.end()));
+  Model damped = p.model;
+  damped.velocity_damping = 2.0 * std::numbers::pi / n;
+  settings.dt = 0.6 * 2.78 / omega_max;
+  settings.steps = 2'000'000'000L;
+  return solve_with(Solver::rk4, damped, s, settings);
+}
+
+}  // namespace
+
 std::vector<BenchRow> run_bench(const BenchOptions& o) {
-  for (const auto& s : o.solvers)
-    if (s != "static" && s != "dr_unit" && s != "newton" && s != "rk4")
-      throw std::invalid_argument("unknown solver '" + s +
-                                  "' (known: static, dr_unit, newton, rk4)");
+  std::vector<Solver> solvers;
+  for (const auto& name : o.solvers) {
+    const auto solver = solver_from_name(name);
+    if (!solver || (!solver_info(*solver).equilibrium && *solver != Solver::rk4)) {
+      std::string known;
+      for (auto k : kBenchSolvers) known += (known.empty() ? "" : ", ") + std::string(k);
+      throw std::invalid_argument("unknown solver '" + name + "' (known: " + known + ")");
+    }
+    solvers.push_back(*solver);
+  }
   std::vector<BenchRow> rows;
   for (int n : o.sizes) {
     const BenchmarkProblem p = make_benchmark_problem(n);
-    for (const auto& name : o.solvers) {
+    for (const Solver solver : solvers) {
       State s = p.start;
-      SolveReport r;
-      if (name == "static" || name == "dr_unit") {
-        StaticOptions so;
-        so.tolerance = o.tolerance;
-        so.max_iterations = 2'000'000'000L;
-        so.max_seconds = o.budget;
-        so.uniform_mass = name == "dr_unit";
-        r = solve_static(p.model, s, so);
-      } else if (name == "newton") {
-        NewtonOptions no;
-        no.tolerance = o.tolerance;
-        no.max_iterations = 100000;
-        no.max_seconds = o.budget;
-        r = solve_newton(p.model, s, no);
-      } else {
-        // RK4 on the unit masses: the step at 60 % of its stability limit for the stiffest
-        // particle, damping that critically damps the sheet's slowest bending-free mode.
-        const auto g = stiffness_scaled_masses(p.model, s.x);
-        const double omega_max = std::sqrt(*std::max_element(g.begin(), g.end()));
-        Model damped = p.model;
-        damped.velocity_damping = 2.0 * std::numbers::pi / n;
-        DynamicsOptions d;
-        d.method = "rk4";
-        d.dt = 0.6 * 2.78 / omega_max;
-        d.steps = 2'000'000'000L;
-        d.tolerance = o.tolerance;
-        d.max_seconds = o.budget;
-        r = run_dynamics(damped, s, d);
-      }
+      SolverSettings settings;
+      settings.tolerance = o.tolerance;
+      settings.max_iterations = 2'000'000'000L;
+      settings.newton_iterations = 100000;
+      settings.max_seconds = o.budget;
+      const SolveReport r = solver == Solver::rk4 ? run_damped_rk4(p, n, s, settings)
+                                                  : solve_with(solver, p.model, s, settings);
+      const std::string name(solver_name(solver));
       BenchRow row{n, name, r, potential_energy(p.model, s.x),
                    r.diverged ? 0.0 : gaussian_curvature(s.x, p.triangles).total};
       if (o.log) {

@@ -10,7 +10,7 @@ namespace membra {
 
 double estimate_memory(const Scene& scene) {
   const double particles = static_cast<double>(scene.grid.nx) * scene.grid.ny;
-  const double per_particle = scene.simulation.solver == "newton" ? 16e3 : 2.5e3;
+  const double per_particle = solver_info(scene.simulation.solver).bytes_per_particle;
   const double frames = static_cast<double>(scene.output.frames) * particles * 32.0;
   return particles * per_particle + frames + 64e6;  // + the program and its renderer
 }
@@ -32,9 +32,12 @@ void check_memory(const Scene& scene, double available) {
   std::ostringstream msg;
   msg.precision(3);
   msg << scene.grid.nx << " x " << scene.grid.ny << " particles with the "
-      << scene.simulation.solver << " solver need about " << need / 1e9
+      << solver_name(scene.simulation.solver) << " solver need about " << need / 1e9
       << " GB, more than this machine's " << available / 1e9 << " GB; use a coarser resolution"
-      << (scene.simulation.solver == "newton" ? " or the static solver (2.5 kB per particle)" : "");
+      << (solver_info(scene.simulation.solver).bytes_per_particle >
+                  solver_info(Solver::static_fire).bytes_per_particle
+              ? " or the static solver (2.5 kB per particle)"
+              : "");
   throw InputError("/sheet/resolution", msg.str());
 }
 

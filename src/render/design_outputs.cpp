@@ -12,11 +12,6 @@ namespace membra {
 
 namespace {
 
-// The best stencil's scene, as run_design ran it.
-Scene design_result_scene(const DesignResult& d) {
-  return parse_scene(d.scene, d.spec.file.parent_path());
-}
-
 nlohmann::json design_report(const DesignResult& d, const Scene& scene) {
   nlohmann::json report = make_report(scene, d.run);
   auto params = [](const DensityParameters& p) {
@@ -60,13 +55,14 @@ nlohmann::json design_report(const DesignResult& d, const Scene& scene) {
 }  // namespace
 
 nlohmann::json make_design_report(const DesignResult& d) {
-  return design_report(d, design_result_scene(d));
+  return design_report(d, d.scene);
 }
 
 std::string stage_design_outputs(const DesignResult& d, OutputSet& out) {
-  out.add("scene.json", [&](std::ostream& os) { os << d.scene.dump(2) << '\n'; });
+  const nlohmann::json scene_file = design_scene(d.spec, d.stencil);
+  out.add("scene.json", [&](std::ostream& os) { os << scene_file.dump(2) << '\n'; });
   out.add("target.obj", [&](std::ostream& os) { write_obj(os, d.target.x, d.target.triangles); });
-  const Scene scene = design_result_scene(d);
+  const Scene& scene = d.scene;
   const nlohmann::json report = design_report(d, scene);
   out.add("report.json", [report](std::ostream& os) { os << report.dump(2) << '\n'; });
   std::string note = stage_run_outputs(scene, d.run, {}, out);

@@ -412,7 +412,8 @@ SliceReport ViewerSession::advance_slice(long max_iterations, double max_seconds
     r = relaxation_.advance(model, m.state, max_iterations);
   } else {
     DynamicsOptions o;
-    o.method = scene_.simulation.is_static() ? "rk4" : scene_.simulation.solver;
+    o.method =
+        scene_.simulation.is_static() ? "rk4" : std::string(solver_name(scene_.simulation.solver));
     o.dt = params_.T;
     o.steps = max_iterations;
     o.tolerance = scene_.simulation.tolerance;

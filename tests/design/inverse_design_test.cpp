@@ -10,7 +10,7 @@
 #include <fstream>
 
 #include "membra/core/input_error.hpp"
-#include "membra/io/inverse_design.hpp"
+#include "membra/io/design_reader.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/scene.hpp"
 
@@ -61,7 +61,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(InverseDesign, TheStencilsSceneReproducesTheReportedForm) {
   const DesignResult d =
       run_design(parse_design(small_design({{"cap", {{"diameter", 160}, {"height", 24}}}}, 2)));
-  const RunResult again = run_scene(parse_scene(d.scene));
+  // From the scene file it writes, as `membra run` would read it.
+  const RunResult again = run_scene(parse_scene(design_scene(d.spec, d.stencil)));
   const Points& a = d.run.prepared.membrane.state.x;
   const Points& b = again.prepared.membrane.state.x;
   ASSERT_EQ(a.cols(), b.cols());
@@ -74,7 +75,7 @@ TEST(InverseDesign, AnUnreachableTargetSaysWhyAndGivesItsBestAttempt) {
       run_design(parse_design(small_design({{"cap", {{"diameter", 190}, {"height", 95}}}}, 2)));
   EXPECT_FALSE(d.reachable);
   EXPECT_NE(d.message.find("more than the stretched frame"), std::string::npos) << d.message;
-  EXPECT_FALSE(d.scene.is_null());
+  EXPECT_FALSE(d.scene.protocol.empty());
   EXPECT_EQ(d.history.size(), 2u);
   EXPECT_EQ(d.start.mean, 1.0);  // as much resin as there can be
 }
@@ -117,7 +118,7 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   j["resin"]["resin_side"] = "bottom";
   j["resin"]["bilayer"] = true;
   Stencil st;
-  st.json = {{"polygon", {{"points", {{10, 10}, {50, 10}, {50, 50}}}}}};
+  st.squares.push_back({Vec2(10, 10), Vec2(50, 10), Vec2(50, 50), Vec2(10, 50)});
   const json coated = design_scene(parse_design(j), st);
   EXPECT_EQ(coated["protocol"][1]["resin_side"], "bottom");
   EXPECT_EQ(coated["protocol"][1]["bilayer"], true);

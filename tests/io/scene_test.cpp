@@ -403,7 +403,7 @@ TEST(MemoryEstimate, RefusesGridsTheMachineCannotHold) {
     EXPECT_NE(std::string(e.what()).find("2.57 GB"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("1 GB"), std::string::npos) << e.what();
   }
-  s.simulation.solver = "newton";
+  s.simulation.solver = Solver::newton;
   EXPECT_THROW(check_memory(s, 8e9), InputError);
   EXPECT_GT(machine_memory(), 1e8);  // this machine reports its memory
 }

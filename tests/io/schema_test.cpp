@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "membra/io/inverse_design.hpp"
+#include "membra/io/design_reader.hpp"
 #include "membra/io/pattern_reader.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"

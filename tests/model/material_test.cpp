@@ -1,4 +1,4 @@
-// Material presets and the homogenization of DESIGN.md section 3.
+// Material presets and the homogenization of docs/model.md ("Homogenization").
 #include <gtest/gtest.h>
 
 #include "membra/model/material.hpp"

@@ -1,5 +1,6 @@
-// The lattice as a continuum: uniaxial tension gives E t and nu = 1/3 (DESIGN.md section 3),
-// and a compressed strip buckles at Euler's load with the plate bending stiffness.
+// The lattice as a continuum: uniaxial tension gives E t and nu = 1/3 (docs/model.md,
+// "Homogenization"), and a compressed strip buckles at Euler's load with the plate bending
+// stiffness.
 #include <cmath>
 #include <cstdio>
 #include <numbers>

@@ -3,9 +3,9 @@
 // one centred square of resin per cell with the cell's density as its area share. Squares
 // smaller than the minimum feature are left out, and gaps narrower than it are closed (the cell
 // is filled), so every piece and every gap of the stencil is at least that wide.
+#include <array>
 #include <functional>
-
-#include <nlohmann/json.hpp>
+#include <vector>
 
 #include "membra/model/pattern.hpp"
 
@@ -17,8 +17,10 @@ struct StencilLayout {
 };
 
 struct Stencil {
-  PatternPtr pattern;        // nullptr when no cell gets resin
-  nlohmann::json json;       // the same as a scene pattern (mm); null when empty
+  PatternPtr pattern;  // nullptr when no cell gets resin
+  // The pieces' corners in frame coordinates in mm, as the stencil's scene file holds them
+  // (`pattern` is made from exactly these numbers), in the order of its parts.
+  std::vector<std::array<Vec2, 4>> squares;
   double resin_share = 0.0;  // of the frame area inside the outline
   int pieces = 0;            // squares of resin
 };

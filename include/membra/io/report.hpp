@@ -1,5 +1,5 @@
 #pragma once
-// report.json: the numbers of a run, each with its unit (DESIGN.md section 8).
+// report.json: the numbers of a run, each with its unit (docs/cli.md, "membra run").
 #include <nlohmann/json.hpp>
 
 #include "membra/process/run.hpp"

@@ -29,10 +29,10 @@ struct LatticeStiffness {
 };
 
 // Stiffnesses whose continuum limit on a square grid is isotropic with membrane stiffness
-// E*t and Poisson ratio 1/3 (DESIGN.md section 3). `flex_ratio` = k_flex / k_stretch (0 = no
-// flex springs). The grid spacing does not enter: a spring of stiffness k spanning a cell gives
-// a membrane stiffness k whatever the cell size. Derivation: C11 = k + k_s + 4 k_f and
-// C12 = C66 = k_s; isotropy needs k_s = (k + 4 k_f) / 2, then E t = 8 k_s / 3.
+// E*t and Poisson ratio 1/3 (docs/model.md, "Homogenization"). `flex_ratio` = k_flex / k_stretch (0
+// = no flex springs). The grid spacing does not enter: a spring of stiffness k spanning a cell
+// gives a membrane stiffness k whatever the cell size. Derivation: C11 = k + k_s + 4 k_f and C12 =
+// C66 = k_s; isotropy needs k_s = (k + 4 k_f) / 2, then E t = 8 k_s / 3.
 LatticeStiffness homogenize(const Material& m, double flex_ratio = 0.0);
 
 // Membrane stiffness E*t (N/m) of a lattice whose stretch stiffness is k, for the same

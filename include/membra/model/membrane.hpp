@@ -1,6 +1,6 @@
 #pragma once
 // The membrane being processed: its sheet and state, and what the protocol has done to it so
-// far (frame, resin). The protocol steps of DESIGN.md section 2 are small functions of it; the
+// far (frame, resin). The protocol steps (docs/process.md) are small functions of it; the
 // solves between them are the caller's (see process/run.hpp).
 #include <cstdint>
 #include <vector>

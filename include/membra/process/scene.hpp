@@ -18,18 +18,19 @@
 #include "membra/model/pattern.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/sheet.hpp"
+#include "membra/solve/solver.hpp"
 
 namespace membra {
 
 // How to simulate: the paper's K, G, T, D and the run length.
 struct SimulationSpec {
-  std::string solver = "static";  // "static" (FIRE), "newton", or an integrator (rk4, ...)
-  double gravity = 9.81;          // G, m/s^2, acting along -z
-  double dt = 1e-4;               // T, s
-  double damping = 0.0;           // D, 1/s (force -D m v on every particle)
-  long steps = 10000;             // time steps of a dynamic solver
-  long max_iterations = 500000;   // iterations of the static solver
-  double tolerance = 1e-6;        // relative to k_stretch x grid spacing
+  Solver solver = Solver::static_fire;  // solve/solver.hpp has the table
+  double gravity = 9.81;                // G, m/s^2, acting along -z
+  double dt = 1e-4;                     // T, s
+  double damping = 0.0;                 // D, 1/s (force -D m v on every particle)
+  long steps = 10000;                   // time steps of a dynamic solver
+  long max_iterations = 500000;         // iterations of the static solver
+  double tolerance = 1e-6;              // relative to k_stretch x grid spacing
   // Tolerance of the intermediate increments of a path (release, grow, ...); the last increment
   // is solved to `tolerance`. Defaults to `tolerance` and is never tighter. Looser values save the
   // slow tails of the intermediate solves (2-3x) but can move the sheet onto another branch
@@ -38,7 +39,7 @@ struct SimulationSpec {
   bool stop_when_converged = true;
 
   // True for the equilibrium solvers (static, newton), false for time stepping.
-  bool is_static() const { return solver == "static" || solver == "newton"; }
+  bool is_static() const { return solver_info(solver).equilibrium; }
 };
 
 // What to draw.
@@ -49,7 +50,7 @@ struct OutputSpec {
   int image_width = 1200, image_height = 900;
 };
 
-// One step of the process (DESIGN.md section 2), in SI.
+// One step of the process (docs/process.md), in SI.
 struct ProtocolStep {
   enum class Kind {
     stretch,

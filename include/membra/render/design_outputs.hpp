@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "membra/io/inverse_design.hpp"
+#include "membra/io/design_reader.hpp"
 #include "membra/io/output_set.hpp"
 
 namespace membra {

@@ -4,14 +4,13 @@
 // with three parameters — mean, radial gradient, x/y anisotropy — started from the target's
 // area (how much of the sheet must keep its stretched size) and its Gaussian curvature (where),
 // laid out as a stencil of squares no smaller than the minimum feature, simulated with the
-// ordinary scene machinery, and improved by a pattern search on the shape error until it stops
-// falling or the budget is spent.
+// ordinary runner (typed scenes, no file in the loop), and improved by a pattern search on the
+// shape error until it stops falling or the budget is spent. The design file is read by
+// io/design_reader.hpp.
 #include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "membra/design/shape_distance.hpp"
 #include "membra/design/stencil_layout.hpp"
@@ -30,18 +29,18 @@ struct DesignSpec {
   std::string material = "latex", resin = "epoxy";
   std::string resin_side = "top";  // the face the stencil is applied to
   bool bilayer = false;            // resin on that face only (the composite curls; bilayer.hpp)
-  nlohmann::json materials;        // the scene's "materials" object, passed on
+  std::string materials_json;      // the design file's "materials" object as written, for the
+                                   // stencil's scene file ("" when it has none)
   StencilLayout layout;            // cell 20 mm, minimum feature 4 mm
   int evaluations = 24;            // forward simulations at most
   double budget = 900.0;           // s of wall time at most
-  std::string solver = "static";
+  Solver solver = Solver::static_fire;
   double tolerance = 1e-6;
   int increments = 10;  // of the release path
+  // The scene every stencil is simulated in: sheet, stretch, an impregnate step at index 1 (its
+  // resin, face and bilayer; the pattern is the stencil's) and release. Made by the reader.
+  Scene scene;
 };
-
-// Reads a design file (docs/inverse_design.md). Throws InputError naming the file and field.
-DesignSpec load_design(const std::filesystem::path& file);
-DesignSpec parse_design(const nlohmann::json& j, const std::filesystem::path& base_dir = ".");
 
 // The density parameters: mean, radial gradient (r^2), anisotropy (x^2 - y^2), over the frame's
 // half-size.
@@ -67,7 +66,7 @@ struct DesignResult {
   bool reachable = true;
   std::string message;            // why the target cannot be reached, when it cannot
   DensityParameters start, best;  // the start from mechanics, the best found
-  nlohmann::json scene;           // the best stencil as an ordinary scene
+  Scene scene;                    // the best stencil's scene, as it was run
   Stencil stencil;
   RunResult run;                            // its forward simulation
   ShapeError error;                         // its distance to the target
@@ -77,8 +76,9 @@ struct DesignResult {
   double seconds = 0.0;
 };
 
-// The scene that simulates a stencil for a design (sheet, stretch, impregnate, release).
-nlohmann::json design_scene(const DesignSpec& spec, const Stencil& stencil);
+// The scene that simulates `stencil` for a design: spec.scene with the stencil as its resin
+// (without the impregnate step when the stencil is empty).
+Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil);
 
 // Runs the design. `progress` (optional) is told of every forward simulation.
 DesignResult run_design(const DesignSpec& spec,

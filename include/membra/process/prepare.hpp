@@ -1,0 +1,24 @@
+#pragma once
+// Scene preparation: the membrane a scene describes, built and pinned, with the memory checked
+// before anything is allocated and the force scale of the convergence test.
+#include "membra/model/membrane.hpp"
+#include "membra/process/scene.hpp"
+
+namespace membra {
+
+// The membrane a scene describes, ready to run.
+struct PreparedScene {
+  Membrane membrane;
+  int pinned = 0;            // particles pinned by the scene's pins
+  double force_scale = 0.0;  // k_stretch x grid spacing, N: the unit of the relative residual
+};
+
+// Builds the membrane of a scene without running it (what `membra validate` checks). Throws
+// InputError naming the scene field when the scene cannot be built.
+PreparedScene prepare_scene(const Scene& scene);
+
+// Pins what `pins` select (in addition to the pins there are). Throws InputError at `where`
+// when a pin selects no particle.
+int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScene& p);
+
+}  // namespace membra

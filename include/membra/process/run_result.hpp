@@ -1,0 +1,66 @@
+#pragma once
+// What a run of a scene produced: the final state (in its prepared membrane), what each step did,
+// the recorded frames, and the end-of-run summary (energies, shape, curvature, stress, cuts,
+// stability).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "membra/measure/curvature.hpp"
+#include "membra/measure/shape.hpp"
+#include "membra/measure/stress.hpp"
+#include "membra/measure/stress_concentration.hpp"
+#include "membra/model/curvature_map.hpp"
+#include "membra/process/prepare.hpp"
+#include "membra/solve/solve_report.hpp"
+#include "membra/solve/stability.hpp"
+
+namespace membra {
+
+// What one protocol step (or the single solve of a scene without protocol) did.
+struct StepReport {
+  std::string name;           // the step's kind ("stretch", "impregnate", ...) or "solve"
+  SolveReport solve;          // the solve after the step (iterations 0 if none was needed)
+  int resin_springs = 0;      // impregnate: springs that received resin
+  int springs_added = 0;      // add_springs
+  int springs_cut = 0;        // cut: springs a cut line removed
+  int particles_removed = 0;  // cut: particles a hole removed
+};
+
+// One recorded instant of a run, for animations and contact sheets.
+struct Frame {
+  Points x;                    // positions, m
+  std::vector<double> stress;  // mean spring stress at each particle, Pa
+};
+
+// A curvature_map step's outcome: the target, how much of it was reachable, how well the final
+// form matches it.
+struct CurvatureMapResult {
+  std::string step;            // "/protocol/N"
+  std::vector<double> target;  // 1/m^2 per particle of the final sheet
+  double reached = 1.0;        // share of the map the conformal factor carries
+  std::string message;         // why not all of it, when reached < 1
+  double margin = 0.0;         // m: the interior compared lies this far from the edge
+  CurvatureMatch match;
+};
+
+struct RunResult {
+  PreparedScene prepared;  // prepared.membrane.state holds the final state
+  SolveReport solve;       // totals over all solves; residual and convergence of the last
+  std::vector<StepReport> steps;
+  double elastic_energy = 0.0;  // J, springs
+  double bending_energy = 0.0;  // J, bending elements and bilayer hinges
+  double gravity_energy = 0.0;  // J
+  double kinetic_energy = 0.0;  // J
+  ShapeSummary shape;
+  GaussianCurvature curvature;  // densities smoothed on the grid
+  std::string form;             // classify_form(curvature)
+  SpringStress stress;          // per spring, for the sheet's thickness
+  std::vector<Frame> frames;    // scene.output.frames instants (dynamic solves, release path)
+  std::vector<StressFeature> features;              // the cuts and holes, in step order
+  std::vector<StressConcentration> concentrations;  // stress at each feature, final state
+  std::optional<CurvatureMapResult> curvature_map;  // scenes with a curvature_map step
+  StabilityReport stability;                        // of the final state
+};
+
+}  // namespace membra

@@ -1,0 +1,14 @@
+#pragma once
+// The end-of-run summary: energies, shape, curvature, stress, the stress at cuts and holes, the
+// curvature map's match, and whether the end state is a minimum.
+#include <functional>
+
+#include "membra/process/run_result.hpp"
+
+namespace membra {
+
+// Fills the summary fields of `r` from its final state. `curvature_field` is the target of the
+// scene's last curvature_map step (1/m^2 at a paper position), empty when it has none.
+void summarize_run(RunResult& r, const std::function<double(const Vec2&)>& curvature_field);
+
+}  // namespace membra

@@ -1,0 +1,193 @@
+#include "membra/io/design_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "membra/core/input_error.hpp"
+#include "membra/core/units.hpp"
+#include "membra/io/json_reader.hpp"
+#include "membra/io/obj.hpp"
+#include "membra/io/scene.hpp"
+
+namespace membra {
+namespace {
+using nlohmann::json;
+
+const std::vector<std::string_view> kTopKeys = {
+    "$schema", "name", "description", "target", "frame", "sheet", "materials", "resin", "design"};
+const std::vector<std::string_view> kTargetKinds = {"cap", "saddle", "cylinder", "height_field",
+                                                    "obj"};
+
+void parse_target(const json& j, const std::string& ptr, const std::filesystem::path& base_dir,
+                  TargetSpec& t) {
+  if (!j.is_object() || j.size() != 1)
+    throw InputError(ptr,
+                     "the target is an object with exactly one key: cap, saddle, cylinder, "
+                     "height_field or obj");
+  const JsonObject outer(j, ptr, kTargetKinds);
+  t.kind = j.begin().key();
+  const std::string p = outer.pointer(t.kind);
+  const json& body = j.begin().value();
+  if (t.kind == "cap") {
+    const JsonObject o(body, p, {"diameter", "height", "resolution"});
+    t.size = o.number("diameter", std::nullopt, Bounds::positive()) * units::mm;
+    t.height = o.number("height", std::nullopt, Bounds::positive()) * units::mm;
+    t.resolution = static_cast<int>(o.integer("resolution", 41, 5, 401));
+    if (t.height > 0.5 * t.size)
+      throw InputError(o.pointer("height"), "a cap is at most a hemisphere: height <= diameter/2");
+  } else if (t.kind == "saddle" || t.kind == "cylinder") {
+    const JsonObject o(body, p, {"size", "height", "resolution"});
+    t.size = o.number("size", std::nullopt, Bounds::positive()) * units::mm;
+    t.height = o.number("height", std::nullopt, Bounds::positive()) * units::mm;
+    t.resolution = static_cast<int>(o.integer("resolution", 41, 5, 401));
+    if (t.kind == "cylinder" && t.height > 0.5 * t.size)
+      throw InputError(o.pointer("height"), "a cylinder patch rises at most half its side");
+  } else if (t.kind == "height_field") {
+    const JsonObject o(body, p, {"size", "z", "resolution"});
+    t.size = o.number("size", std::nullopt, Bounds::positive()) * units::mm;
+    t.formula = o.string("z", std::nullopt);
+    t.resolution = static_cast<int>(o.integer("resolution", 41, 5, 401));
+  } else {
+    const JsonObject o(body, p, {"file"});
+    t.obj_file = (base_dir / o.string("file", std::nullopt)).string();
+    std::ifstream in(t.obj_file);
+    if (!in) throw InputError(o.pointer("file"), t.obj_file + ": cannot open the OBJ file");
+    const ObjMesh mesh = read_obj(in, t.obj_file);
+    t.obj_x = mesh.x;
+    t.obj_triangles = mesh.triangles;
+  }
+  try {
+    (void)make_target(t);  // fail now, naming the field, not after minutes of simulation
+  } catch (const std::invalid_argument& e) {
+    throw InputError(p, e.what());
+  }
+}
+
+// The stencil's squares as a scene pattern (mm): one polygon, or a union of them.
+json stencil_json(const Stencil& stencil) {
+  json parts = json::array();
+  for (const auto& square : stencil.squares) {
+    json pts = json::array();
+    for (const Vec2& p : square) pts.push_back({p.x(), p.y()});
+    parts.push_back({{"polygon", {{"points", pts}}}});
+  }
+  return parts.size() == 1 ? parts[0] : json{{"union", parts}};
+}
+
+}  // namespace
+
+DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
+  DesignSpec s;
+  const JsonObject top(j, "", kTopKeys);
+  s.name = top.string("name", "design");
+  if (!top.has("target")) throw InputError("/target", "a design needs a target surface");
+  parse_target(top.at("target"), "/target", base_dir, s.target);
+  if (top.has("frame")) {
+    const JsonObject f = top.object("frame", {"size", "lambda"});
+    s.frame = f.number("size", 200.0, Bounds::positive()) * units::mm;
+    if (f.has("lambda")) {
+      const auto l = f.numbers("lambda", 2, Bounds{1.0, 10.0, false});
+      s.lambda = Vec2(l[0], l[1]);
+      if (!(s.lambda.prod() > 1.0))
+        throw InputError(f.pointer("lambda"),
+                         "at least one direction must be stretched (lambda > 1): without "
+                         "pre-stretch resin changes nothing");
+    }
+  }
+  if (top.has("sheet")) {
+    const JsonObject o = top.object("sheet", {"resolution", "material"});
+    s.resolution = static_cast<int>(o.integer("resolution", s.resolution, 5, 201));
+    s.material = o.string("material", s.material);
+  }
+  if (top.has("materials")) s.materials_json = top.at("materials").dump();
+  if (top.has("resin")) {
+    const JsonObject o =
+        top.object("resin", {"material", "min_feature", "cell", "resin_side", "bilayer"});
+    s.resin = o.string("material", s.resin);
+    s.resin_side = o.string("resin_side", "top", {"top", "bottom"});
+    s.bilayer = o.boolean("bilayer", false);
+    s.layout.min_feature = o.number("min_feature", 4.0, Bounds::positive()) * units::mm;
+    s.layout.cell = o.number("cell", 20.0, Bounds::positive()) * units::mm;
+    if (s.layout.cell < 2.0 * s.layout.min_feature)
+      throw InputError(o.pointer("cell"),
+                       "the cell must be at least twice min_feature (a piece and a gap)");
+    if (s.layout.cell > 0.5 * s.frame)
+      throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
+  }
+  if (top.has("design")) {
+    const JsonObject o =
+        top.object("design", {"evaluations", "budget", "solver", "tolerance", "increments"});
+    s.evaluations = static_cast<int>(o.integer("evaluations", s.evaluations, 1, 10000));
+    s.budget = o.number("budget", s.budget, Bounds::positive());
+    std::vector<std::string_view> equilibrium;
+    for (const SolverInfo& info : solver_table())
+      if (info.equilibrium && info.in_scenes) equilibrium.push_back(info.name);
+    s.solver =
+        *solver_from_name(o.string("solver", std::string(solver_name(s.solver)), equilibrium));
+    s.tolerance = o.number("tolerance", s.tolerance, Bounds{0.0, 1.0, true});
+    s.increments = static_cast<int>(o.integer("increments", s.increments, 1, 1000));
+  }
+  if (s.target.kind != "obj" && s.target.size > s.frame)
+    throw InputError("/target",
+                     "the target is wider than the frame: the released sheet is "
+                     "always smaller than the frame it was stretched on");
+  // The scene it makes must be valid too (materials, resolution): read once now, with one
+  // square of resin so that the resin is checked too; the search puts its stencils in its place.
+  try {
+    Stencil probe;
+    probe.squares.push_back({Vec2(90, 90), Vec2(110, 90), Vec2(110, 110), Vec2(90, 110)});
+    s.scene = parse_scene(design_scene(s, probe), base_dir);
+  } catch (const InputError& e) {
+    throw InputError("(the scene this design makes) " + e.where(), e.detail());
+  }
+  return s;
+}
+
+DesignSpec load_design(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  const json j = read_json_file(file, "design");
+  try {
+    DesignSpec s = parse_design(j, file.parent_path());
+    s.file = file;
+    return s;
+  } catch (const InputError& e) {
+    throw InputError(name + ": " + e.where(), e.detail());
+  }
+}
+
+json design_scene(const DesignSpec& spec, const Stencil& stencil) {
+  const bool disk = spec.target.kind == "cap";
+  const double wx = spec.frame / spec.lambda.x() / units::mm,
+               wy = spec.frame / spec.lambda.y() / units::mm;
+  // `resolution` particles along the shorter side, square cells (as many as fit) along the other.
+  const int n = spec.resolution;
+  const int nx = wx <= wy ? n : static_cast<int>(std::lround((n - 1) * wx / wy)) + 1;
+  const int ny = wy <= wx ? n : static_cast<int>(std::lround((n - 1) * wy / wx)) + 1;
+  json scene = {
+      {"name", spec.name},
+      {"description", "Stencil designed by `membra design` for a " + spec.target.kind + " target"},
+      {"sheet",
+       {{"size", {wx, wy}},
+        {"resolution", {nx, ny}},
+        {"material", spec.material},
+        {"outline", disk ? "disk" : "rectangle"}}},
+      {"simulation",
+       {{"solver", std::string(solver_name(spec.solver))},
+        {"G", 0.0},
+        {"tolerance", spec.tolerance}}},
+      {"protocol", json::array()}};
+  if (!spec.materials_json.empty()) scene["materials"] = json::parse(spec.materials_json);
+  json& p = scene["protocol"];
+  p.push_back({{"step", "stretch"}, {"lambda", {spec.lambda.x(), spec.lambda.y()}}});
+  if (!stencil.squares.empty())
+    p.push_back({{"step", "impregnate"},
+                 {"material", spec.resin},
+                 {"resin_side", spec.resin_side},
+                 {"bilayer", spec.bilayer},
+                 {"pattern", stencil_json(stencil)}});
+  p.push_back({{"step", "release"}, {"increments", spec.increments}});
+  return scene;
+}
+
+}  // namespace membra

@@ -1,0 +1,74 @@
+#include "membra/process/summary.hpp"
+
+#include <algorithm>
+
+#include "membra/measure/hole_edge.hpp"
+#include "membra/measure/stress_tensor.hpp"
+#include "membra/model/forces.hpp"
+
+namespace membra {
+namespace {
+
+void summarize_form(RunResult& r) {
+  const Membrane& mem = r.prepared.membrane;
+  const Model& m = mem.sheet.model;
+  const State& s = mem.state;
+  r.elastic_energy = elastic_energy(m, s.x);
+  // The bilayer hinges hold the linear part of the plate energy: reported with the bending.
+  r.bending_energy = bending_energy(m, s.x) + hinge_energy(m, s.x);
+  r.gravity_energy = gravity_energy(m, s.x);
+  r.kinetic_energy = kinetic_energy(m, s.v);
+  r.shape = summarize_shape(s.x, m.reference);
+  r.curvature = gaussian_curvature(s.x, mem.sheet.triangles);
+  smooth_density_on_grid(mem.sheet.grid, r.curvature);
+  r.form = classify_form(r.curvature);
+  r.stress = spring_stress(m, s.x, mem.sheet.material.thickness);
+  // A small residual does not tell a minimum from a soft saddle.
+  r.stability = check_stability(m, s.x, mem.sheet.stiffness.stretch);
+}
+
+// Compared over the interior: a tenth of the sheet's smaller side in from the edge, where the
+// edge's own (geodesic) curvature and the smoothing of the measure do not reach.
+void summarize_curvature_map(RunResult& r, const std::function<double(const Vec2&)>& field) {
+  const Membrane& mem = r.prepared.membrane;
+  const Model& m = mem.sheet.model;
+  CurvatureMapResult& cm = *r.curvature_map;
+  cm.target.resize(static_cast<size_t>(m.num_particles()));
+  for (int q = 0; q < m.num_particles(); ++q) cm.target[q] = field(m.reference.col(q).head<2>());
+  cm.margin = 0.1 * std::min(mem.sheet.grid.width(), mem.sheet.grid.height());
+  cm.match = match_curvature(mem.sheet, cm.target, r.curvature.density, cm.margin);
+}
+
+// Peak within 1.5 spacings (the particles on the new edge) against the median far away; for
+// holes also the edge value read off the grid's staircase (hole_edge.hpp).
+void summarize_features(RunResult& r) {
+  const Membrane& mem = r.prepared.membrane;
+  const Model& m = mem.sheet.model;
+  const GridSheet& g = mem.sheet.grid;
+  const auto principal =
+      max_principal_stress(node_stress(g, m, mem.state.x, mem.sheet.material.thickness));
+  const double near = 1.5 * std::max(g.hx(), g.hy());
+  const double far = 0.25 * std::min(g.width(), g.height());
+  for (const StressFeature& f : r.features) {
+    StressConcentration c = stress_concentration(m, principal, f, near, far);
+    if (f.kind == "hole") {
+      const HoleEdge e = hole_edge(g, principal, f.where);
+      c.has_edge = e.valid;
+      c.edge_stress = e.value;
+      c.edge_angle = e.angle;
+      c.hole_radius = e.radius;
+      if (e.valid && c.far_field_stress > 0.0) c.edge_concentration = e.value / c.far_field_stress;
+    }
+    r.concentrations.push_back(c);
+  }
+}
+
+}  // namespace
+
+void summarize_run(RunResult& r, const std::function<double(const Vec2&)>& curvature_field) {
+  summarize_form(r);
+  if (r.curvature_map) summarize_curvature_map(r, curvature_field);
+  if (!r.features.empty()) summarize_features(r);
+}
+
+}  // namespace membra

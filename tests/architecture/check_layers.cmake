@@ -1,0 +1,40 @@
+# Checks that no file of a layer includes a header of a layer above it (docs/architecture.md).
+# Run as: cmake -DSOURCE_DIR=<repo> -P check_layers.cmake. The CMake targets, one per layer and
+# linked only downwards, stop a call upwards at link time; this stops an include upwards (an
+# inline function or a type) that the linker cannot see.
+set(layers core geometry model solve measure process design io render view)
+# Rank of each layer: a layer may include its own headers and those of lower ranks. solve and
+# measure are siblings, as are render and view.
+set(rank_core 0)
+set(rank_geometry 1)
+set(rank_model 2)
+set(rank_solve 3)
+set(rank_measure 3)
+set(rank_process 4)
+set(rank_design 5)
+set(rank_io 6)
+set(rank_render 7)
+set(rank_view 7)
+set(violations "")
+foreach(layer IN LISTS layers)
+  file(GLOB_RECURSE files
+       ${SOURCE_DIR}/include/membra/${layer}/*.hpp ${SOURCE_DIR}/src/${layer}/*.cpp)
+  foreach(f IN LISTS files)
+    file(STRINGS ${f} includes REGEX "^#include \"membra/[a-z_]+/")
+    foreach(line IN LISTS includes)
+      string(REGEX REPLACE "^#include \"membra/([a-z_]+)/.*" "\\1" target "${line}")
+      if(target STREQUAL layer)
+        continue()
+      endif()
+      if(NOT DEFINED rank_${target} OR NOT rank_${target} LESS rank_${layer})
+        file(RELATIVE_PATH rel ${SOURCE_DIR} ${f})
+        list(APPEND violations "${rel}: ${layer} includes ${target} (${line})")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(violations)
+  list(JOIN violations "\n" text)
+  message(FATAL_ERROR "headers included from a layer above (docs/architecture.md):\n${text}")
+endif()
+message(STATUS "layers: no include reaches up")
