@@ -13,10 +13,12 @@ namespace {
 
 // A path that applies `ratios` of growth gradually: at t, the share t of it in all.
 Path growth_path(Membrane& m, std::vector<double> ratios, int increments) {
-  auto applied = std::make_shared<double>(0.0);  // share of the growth applied so far
-  return {Path::Kind::gradual, increments, [&m, ratios = std::move(ratios), applied](double t) {
-            apply_growth(m, ratios, t - *applied);
-            *applied = t;
+  // The share applied so far lives in the path, so that a copy of the path (the viewer's undo)
+  // carries its own.
+  return {Path::Kind::gradual, increments,
+          [&m, ratios = std::move(ratios), applied = 0.0](double t) mutable {
+            apply_growth(m, ratios, t - applied);
+            applied = t;
           }};
 }
 

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/pins.hpp"
+#include "membra/process/steps.hpp"
 #include "membra/solve/dynamics.hpp"
 
 namespace membra {
@@ -106,8 +108,8 @@ nlohmann::json ViewerSession::resin_pattern_json() const {
 }
 
 ViewerSession::Snapshot ViewerSession::snapshot() const {
-  return {prepared_.membrane,  stage_,       strokes_,           log_, release_step_,
-          release_increments_, viewer_pins_, scene_pattern_used_};
+  return {prepared_.membrane, stage_,       strokes_,           log_, path_,
+          path_done_,         viewer_pins_, scene_pattern_used_};
 }
 
 void ViewerSession::restore(const Snapshot& s) {
@@ -115,8 +117,8 @@ void ViewerSession::restore(const Snapshot& s) {
   stage_ = s.stage;
   strokes_ = s.strokes;
   log_ = s.log;
-  release_step_ = s.release_step;
-  release_increments_ = s.release_increments;
+  path_ = s.path;
+  path_done_ = s.path_done;
   viewer_pins_ = s.viewer_pins;
   scene_pattern_used_ = s.scene_pattern_used;
   queue_.clear();
@@ -230,16 +232,8 @@ std::string ViewerSession::release() {
   const ProtocolStep* s = first_step(ProtocolStep::Kind::release);
   const ProtocolStep defaults;
   const ProtocolStep& r = s ? *s : defaults;
-  Membrane& m = prepared_.membrane;
-  perturb(m, r.perturbation, r.seed);
-  begin_release(m);
-  release_increments_ = r.increments;
-  release_step_ = 0;
-  if (mode_ == LiveMode::dynamics) {
-    // Time stepping lets go at once, as `membra run` does with an integrator.
-    set_release_level(m, 0.0);
-    release_step_ = release_increments_;
-  }
+  StepEffects effects;
+  start_path(apply_release(prepared_.membrane, r, effects));
   log_.push_back({{"step", "release"},
                   {"increments", r.increments},
                   {"perturbation", r.perturbation / units::mm},
@@ -341,7 +335,8 @@ void ViewerSession::reset() {
   strokes_.clear();
   log_ = nlohmann::json::array();
   viewer_pins_.clear();
-  release_step_ = release_increments_ = 0;
+  path_ = Path{};
+  path_done_ = 0;
   scene_pattern_used_ = false;
   queue_.clear();
   // The live parameters stay as the user set them.
@@ -434,10 +429,10 @@ SliceReport ViewerSession::advance_slice(long max_iterations, double max_seconds
     return rep;
   }
   if (!r.converged) return rep;
-  if (m.releasing && release_step_ < release_increments_) {
-    // The next increment of the release path.
-    ++release_step_;
-    set_release_level(m, 1.0 - static_cast<double>(release_step_) / release_increments_);
+  if (path_.kind == Path::Kind::gradual && path_done_ < path_.increments) {
+    // The next increment of the path, as follow_path takes it.
+    ++path_done_;
+    path_.set(static_cast<double>(path_done_) / path_.increments);
     model_changed();
     return rep;
   }
@@ -498,30 +493,33 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
       return logged(impregnate_with(step.pattern, step.pattern_json, &step));
     case ProtocolStep::Kind::release:
       return logged(release());
-    case ProtocolStep::Kind::cut: {
+    default:
+      // cut, load, grow, add_springs, curvature_map: as the runner applies them.
       push_undo();
-      int n = 0;
-      if (!step.cut_line.empty()) n += cut_along(prepared_.membrane, step.cut_line);
-      if (step.hole) n += punch_hole(prepared_.membrane, *step.hole);
-      log_.push_back(written);
-      model_changed();
-      return n > 0 ? "" : "the scene's cut touches no spring";
-    }
-    case ProtocolStep::Kind::load:
-      push_undo();
-      if (step.gravity) {
-        params_.G = *step.gravity;
-        prepared_.membrane.sheet.model.gravity = Vec3(0.0, 0.0, -*step.gravity);
+      try {
+        StepEffects effects;
+        start_path(apply_step(prepared_, step, effects));
+      } catch (const InputError& e) {
+        restore(undo_.back());
+        undo_.pop_back();
+        return e.what();
       }
-      apply_pins(step.pins, prepared_.membrane.sheet.grid, prepared_.membrane.sheet.model);
+      if (step.kind == ProtocolStep::Kind::load && step.gravity) params_.G = *step.gravity;
       log_.push_back(written);
       model_changed();
       return "";
-    default:
-      return std::string("the scene's step ") + step.pointer +
-             " (grow, add_springs, curvature_map) is not available in the viewer: run the scene "
-             "with `membra run`";
   }
+}
+
+void ViewerSession::start_path(Path path) {
+  path_ = std::move(path);
+  path_done_ = 0;
+  if (path_.kind != Path::Kind::gradual) return;
+  // The first increment at once, as follow_path takes it: the step's perturbation must still be
+  // there when the change begins, or the sheet relaxes it away and buckles on round-off.
+  path_done_ = mode_ == LiveMode::dynamics ? path_.increments : 1;
+  // Time stepping lets go at once, as `membra run` does with an integrator.
+  path_.set(static_cast<double>(path_done_) / path_.increments);
 }
 
 nlohmann::json ViewerSession::to_scene_json() const {

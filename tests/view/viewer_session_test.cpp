@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include <Eigen/SVD>
+
 #include "membra/core/units.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
@@ -208,6 +210,54 @@ TEST(ViewerSession, PlaysTheScenesOwnProtocol) {
   // The log is the scene's protocol, so saving and running gives the same result.
   EXPECT_EQ(s.log(), json(protocol));
 }
+
+// The steps the viewer once skipped (grow, add_springs, curvature_map) play through the same
+// process steps as `membra run`, and the saved session runs to the same form.
+// Largest distance between corresponding points after the best rigid motion (Kabsch).
+double rigid_distance(const Points& a, const Points& b) {
+  const Vec3 ca = a.rowwise().mean(), cb = b.rowwise().mean();
+  const Points p = a.colwise() - ca, q = b.colwise() - cb;
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(q * p.transpose(),
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  d(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1.0 : 1.0;
+  const Eigen::Matrix3d r = svd.matrixV() * d * svd.matrixU().transpose();
+  return (p - r * q).cwiseAbs().maxCoeff();
+}
+
+class ViewerPlaysEveryStep : public ::testing::TestWithParam<json> {};
+
+TEST_P(ViewerPlaysEveryStep, AndTheSavedSessionRunsToTheSameForm) {
+  const json protocol = json::array({GetParam()});
+  ViewerSession s(small_scene(protocol));
+  s.play_scene_protocol();
+  const SliceReport r = s.settle();
+  ASSERT_TRUE(r.settled) << r.message;
+  EXPECT_EQ(s.log(), protocol);
+  const RunResult run = run_scene(parse_scene(s.to_scene_json()));
+  ASSERT_TRUE(run.solve.converged) << run.solve.message;
+  const Points& a = s.membrane().state.x;
+  const Points& b = run.prepared.membrane.state.x;
+  ASSERT_EQ(a.cols(), b.cols());
+  const double size = 0.1;
+  // The step changed the sheet (out of plane, or in plane for the added springs' pull) ...
+  EXPECT_GT((a - run.prepared.membrane.sheet.model.reference).cwiseAbs().maxCoeff(), 1e-3 * size);
+  // ... and both front ends end in the same form, up to the solver's tolerance (the viewer
+  // checks convergence at slice ends as well) and a rigid motion of the free sheet.
+  EXPECT_LT(rigid_distance(a, b), 1e-4 * size);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Steps, ViewerPlaysEveryStep,
+    ::testing::Values(json{{"step", "grow"},
+                           {"factor", "1 + 0.3*sin(pi*(x - w/2)/(2*w))^2"},
+                           {"direction", "y"},
+                           {"increments", 4}},
+                      json{{"step", "add_springs"},
+                           {"pattern", {{"circle", {{"center", {50, 50}}, {"radius", 25}}}}},
+                           {"rest_factor", 0.8},
+                           {"increments", 4}},
+                      json{{"step", "curvature_map"}, {"K", 2e-4}, {"increments", 4}}));
 
 // Painted resin takes the face and the bilayer of the scene's impregnate step, and the saved
 // protocol keeps them, so `membra run` curls the sheet the same way.

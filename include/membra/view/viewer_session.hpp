@@ -1,6 +1,8 @@
 #pragma once
 // What the viewer edits and simulates, with no window: a scene's membrane taken through the
-// protocol one button at a time (stretch, impregnate, release), brush strokes of resin, cuts,
+// protocol one button at a time (stretch, impregnate, release) or step by step through the
+// scene's own protocol, every step applied by process/steps.hpp and its path followed in slices
+// as `membra run` follows it at once; brush strokes of resin, cuts,
 // holes and pins, live K, G, T, D, undo/redo, and a simulation advanced in slices so the UI
 // stays responsive. Every action is also logged as a protocol step, so the session saves as an
 // ordinary scene that `membra run` reproduces.
@@ -12,6 +14,7 @@
 
 #include "membra/io/scene.hpp"
 #include "membra/model/membrane.hpp"
+#include "membra/process/path.hpp"
 #include "membra/process/run.hpp"
 #include "membra/solve/static_solver.hpp"
 
@@ -121,7 +124,8 @@ class ViewerSession {
     Stage stage;
     std::vector<Stroke> strokes;
     nlohmann::json log;
-    int release_step, release_increments;
+    Path path;
+    int path_done;
     std::vector<Vec2> viewer_pins;
     bool scene_pattern_used;
   };
@@ -131,6 +135,8 @@ class ViewerSession {
   void model_changed();
   const ProtocolStep* first_step(ProtocolStep::Kind kind) const;
   std::string apply_scene_step(const ProtocolStep& step);
+  // Follows `path` from now on (at once in dynamics mode).
+  void start_path(Path path);
   SliceReport advance_slice(long max_iterations, double max_seconds);
   // Applies `pattern` with the resin, face and bilayer of `step` (the scene's first impregnate
   // step for painted resin; epoxy on top, soaked through, when the scene has none).
@@ -147,7 +153,10 @@ class ViewerSession {
   std::vector<Vec2> viewer_pins_;        // paper positions of particles pinned in the viewer
   bool scene_pattern_used_ = false;      // the scene's impregnate patterns have been applied
   std::string material_name_ = "epoxy";  // the resin of the scene's first impregnate step
-  int release_step_ = 0, release_increments_ = 0;  // release path: done / in all
+  // The path being followed (release, grow, add_springs, curvature_map: process/path.hpp), and
+  // how many of its increments are done.
+  Path path_;
+  int path_done_ = 0;
   bool settled_ = false;
   SliceReport last_slice_;
   bool editing_ = false;  // between begin_edit() and end_edit(): one snapshot in all
