@@ -42,6 +42,7 @@ Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil) {
   Scene scene = spec.scene;
   if (stencil.pattern) {
     scene.protocol[1].pattern = stencil.pattern;
+    scene.protocol[1].pattern_spec = stencil.spec;
   } else {
     // No resin: stretch and release only, numbered as the scene file numbers them.
     scene.protocol.erase(scene.protocol.begin() + 1);

@@ -19,7 +19,7 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
   const int ny = std::max(1, static_cast<int>(std::lround(size.y() / c)));
   const double cx = size.x() / nx, cy = size.y() / ny;  // cells fill the frame exactly
   Stencil s;
-  std::vector<PatternPtr> parts;
+  std::vector<std::array<Vec2, 4>> squares;
   double resin = 0.0, total = 0.0;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
@@ -35,20 +35,31 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
       const Vec2 h(0.5 * fx, 0.5 * fy);
       std::array<Vec2, 4> square = {centre - h, Vec2(centre.x() + h.x(), centre.y() - h.y()),
                                     centre + h, Vec2(centre.x() - h.x(), centre.y() + h.y())};
-      // In mm as a scene file holds it, so that the stencil simulated is the one written.
-      std::vector<Vec2> corners;
-      for (Vec2& p : square) {
-        p /= units::mm;
-        corners.push_back(p * units::mm);
-      }
-      parts.push_back(make_polygon(std::move(corners)));
-      s.squares.push_back(square);
+      // Through mm, as a scene file holds it, so that the stencil simulated is the one written.
+      for (Vec2& p : square) p = (p / units::mm) * units::mm;
+      squares.push_back(square);
       resin += fx * fy;
       ++s.pieces;
     }
-  s.resin_share = total > 0.0 ? resin / total : 0.0;
-  if (parts.empty()) return s;
-  s.pattern = parts.size() == 1 ? parts[0] : make_union(parts);
+  Stencil out = stencil_of(squares);
+  out.resin_share = total > 0.0 ? resin / total : 0.0;
+  out.pieces = s.pieces;
+  return out;
+}
+
+Stencil stencil_of(const std::vector<std::array<Vec2, 4>>& squares) {
+  Stencil s;
+  s.pieces = static_cast<int>(squares.size());
+  if (squares.empty()) return s;
+  std::vector<PatternSpec> parts;
+  for (const auto& square : squares) {
+    PatternSpec p;
+    p.kind = PatternSpec::Kind::polygon;
+    p.points.assign(square.begin(), square.end());
+    parts.push_back(std::move(p));
+  }
+  s.spec = parts.size() == 1 ? parts[0] : union_spec(std::move(parts));
+  s.pattern = make_pattern(s.spec, Vec2::Zero());
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include "membra/io/json_reader.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/io/scene_writer.hpp"
 
 namespace membra {
 namespace {
@@ -64,15 +65,41 @@ void parse_target(const json& j, const std::string& ptr, const std::filesystem::
   }
 }
 
-// The stencil's squares as a scene pattern (mm): one polygon, or a union of them.
-json stencil_json(const Stencil& stencil) {
-  json parts = json::array();
-  for (const auto& square : stencil.squares) {
-    json pts = json::array();
-    for (const Vec2& p : square) pts.push_back({p.x(), p.y()});
-    parts.push_back({{"polygon", {{"points", pts}}}});
-  }
-  return parts.size() == 1 ? parts[0] : json{{"union", parts}};
+// The scene a design's stencils are simulated in, with one square of resin (the search puts its
+// stencils in its place): read once when the design is, so that its materials and resolution are
+// checked before any simulation.
+json base_scene(const DesignSpec& spec, const json& materials) {
+  const bool disk = spec.target.kind == "cap";
+  const double wx = spec.frame / spec.lambda.x() / units::mm,
+               wy = spec.frame / spec.lambda.y() / units::mm;
+  // `resolution` particles along the shorter side, square cells (as many as fit) along the other.
+  const int n = spec.resolution;
+  const int nx = wx <= wy ? n : static_cast<int>(std::lround((n - 1) * wx / wy)) + 1;
+  const int ny = wy <= wx ? n : static_cast<int>(std::lround((n - 1) * wy / wx)) + 1;
+  json scene = {
+      {"name", spec.name},
+      {"description", "Stencil designed by `membra design` for a " + spec.target.kind + " target"},
+      {"sheet",
+       {{"size", {wx, wy}},
+        {"resolution", {nx, ny}},
+        {"material", spec.material},
+        {"outline", disk ? "disk" : "rectangle"}}},
+      {"simulation",
+       {{"solver", std::string(solver_name(spec.solver))},
+        {"G", 0.0},
+        {"tolerance", spec.tolerance}}},
+      {"protocol", json::array()}};
+  if (!materials.is_null()) scene["materials"] = materials;
+  json& p = scene["protocol"];
+  p.push_back({{"step", "stretch"}, {"lambda", {spec.lambda.x(), spec.lambda.y()}}});
+  p.push_back(
+      {{"step", "impregnate"},
+       {"material", spec.resin},
+       {"resin_side", spec.resin_side},
+       {"bilayer", spec.bilayer},
+       {"pattern", {{"polygon", {{"points", {{90, 90}, {110, 90}, {110, 110}, {90, 110}}}}}}}});
+  p.push_back({{"step", "release"}, {"increments", spec.increments}});
+  return scene;
 }
 
 }  // namespace
@@ -100,7 +127,6 @@ DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
     s.resolution = static_cast<int>(o.integer("resolution", s.resolution, 5, 201));
     s.material = o.string("material", s.material);
   }
-  if (top.has("materials")) s.materials_json = top.at("materials").dump();
   if (top.has("resin")) {
     const JsonObject o =
         top.object("resin", {"material", "min_feature", "cell", "resin_side", "bilayer"});
@@ -132,12 +158,10 @@ DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
     throw InputError("/target",
                      "the target is wider than the frame: the released sheet is "
                      "always smaller than the frame it was stretched on");
-  // The scene it makes must be valid too (materials, resolution): read once now, with one
-  // square of resin so that the resin is checked too; the search puts its stencils in its place.
+  // The scene it makes must be valid too (materials, resolution).
   try {
-    Stencil probe;
-    probe.squares.push_back({Vec2(90, 90), Vec2(110, 90), Vec2(110, 110), Vec2(90, 110)});
-    s.scene = parse_scene(design_scene(s, probe), base_dir);
+    s.scene =
+        parse_scene(base_scene(s, top.has("materials") ? top.at("materials") : json()), base_dir);
   } catch (const InputError& e) {
     throw InputError("(the scene this design makes) " + e.where(), e.detail());
   }
@@ -157,37 +181,7 @@ DesignSpec load_design(const std::filesystem::path& file) {
 }
 
 json design_scene(const DesignSpec& spec, const Stencil& stencil) {
-  const bool disk = spec.target.kind == "cap";
-  const double wx = spec.frame / spec.lambda.x() / units::mm,
-               wy = spec.frame / spec.lambda.y() / units::mm;
-  // `resolution` particles along the shorter side, square cells (as many as fit) along the other.
-  const int n = spec.resolution;
-  const int nx = wx <= wy ? n : static_cast<int>(std::lround((n - 1) * wx / wy)) + 1;
-  const int ny = wy <= wx ? n : static_cast<int>(std::lround((n - 1) * wy / wx)) + 1;
-  json scene = {
-      {"name", spec.name},
-      {"description", "Stencil designed by `membra design` for a " + spec.target.kind + " target"},
-      {"sheet",
-       {{"size", {wx, wy}},
-        {"resolution", {nx, ny}},
-        {"material", spec.material},
-        {"outline", disk ? "disk" : "rectangle"}}},
-      {"simulation",
-       {{"solver", std::string(solver_name(spec.solver))},
-        {"G", 0.0},
-        {"tolerance", spec.tolerance}}},
-      {"protocol", json::array()}};
-  if (!spec.materials_json.empty()) scene["materials"] = json::parse(spec.materials_json);
-  json& p = scene["protocol"];
-  p.push_back({{"step", "stretch"}, {"lambda", {spec.lambda.x(), spec.lambda.y()}}});
-  if (!stencil.squares.empty())
-    p.push_back({{"step", "impregnate"},
-                 {"material", spec.resin},
-                 {"resin_side", spec.resin_side},
-                 {"bilayer", spec.bilayer},
-                 {"pattern", stencil_json(stencil)}});
-  p.push_back({{"step", "release"}, {"increments", spec.increments}});
-  return scene;
+  return write_scene(stencil_scene(spec, stencil));
 }
 
 }  // namespace membra

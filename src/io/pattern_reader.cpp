@@ -1,7 +1,6 @@
 #include "membra/io/pattern_reader.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "membra/core/units.hpp"
 #include "membra/io/image.hpp"
@@ -43,13 +42,26 @@ Vec2 read_vec2(const JsonObject& o, std::string_view key, Bounds b = {}) {
 }
 
 double degrees(const JsonObject& o) {
-  return o.number("angle", 0.0, Bounds::between(-360, 360)) * std::numbers::pi / 180.0;
+  return o.number("angle", 0.0, Bounds::between(-360, 360));
+}
+
+void read_image(const JsonObject& o, const std::filesystem::path& base_dir, PatternSpec& s) {
+  s.kind = PatternSpec::Kind::image;
+  s.file = o.string("file", std::nullopt);
+  GreyImage img = load_grey_image(base_dir / s.file, o.pointer("file"));
+  s.grey = std::move(img.value);
+  s.image_width = img.width;
+  s.image_height = img.height;
+  if (o.has("origin")) s.origin = read_vec2(o, "origin");
+  if (o.has("size")) s.size = read_vec2(o, "size", Bounds::positive());
+  s.threshold = o.number("threshold", 0.5, Bounds::between(0.0, 1.0));
+  s.invert = o.boolean("invert", false);
 }
 
 }  // namespace
 
-PatternPtr read_pattern(const json& j, const std::string& pointer,
-                        const std::filesystem::path& base_dir, const Vec2& frame_size) {
+PatternSpec read_pattern_spec(const json& j, const std::string& pointer,
+                              const std::filesystem::path& base_dir) {
   if (!j.is_object() || j.size() != 1) {
     std::string list;
     for (auto k : kKinds) list += (list.empty() ? "" : ", ") + std::string(k);
@@ -59,62 +71,53 @@ PatternPtr read_pattern(const json& j, const std::string& pointer,
   const std::string kind = j.begin().key();
   const json& body = j.begin().value();
   const std::string ptr = outer.pointer(kind);
-
+  PatternSpec s;
   if (kind == "union" || kind == "difference") {
     if (!body.is_array() || body.empty())
       throw InputError(ptr, "expected a non-empty array of patterns");
-    std::vector<PatternPtr> parts;
+    s.kind = kind == "union" ? PatternSpec::Kind::union_of : PatternSpec::Kind::difference;
     for (size_t i = 0; i < body.size(); ++i)
-      parts.push_back(read_pattern(body[i], ptr + "/" + std::to_string(i), base_dir, frame_size));
-    return kind == "union" ? make_union(std::move(parts)) : make_difference(std::move(parts));
-  }
-  if (kind == "strip") {
+      s.parts.push_back(read_pattern_spec(body[i], ptr + "/" + std::to_string(i), base_dir));
+  } else if (kind == "strip") {
     const JsonObject o(body, ptr, kStripKeys);
-    const double width = o.number("width", std::nullopt, Bounds::positive()) * units::mm;
-    return make_strip(read_points(o, "points", 1), width);
-  }
-  if (kind == "ellipse") {
+    s.kind = PatternSpec::Kind::strip;
+    s.width = o.number("width", std::nullopt, Bounds::positive()) * units::mm;
+    s.points = read_points(o, "points", 1);
+  } else if (kind == "ellipse") {
     const JsonObject o(body, ptr, kEllipseKeys);
-    const Vec2 c = read_vec2(o, "center");
-    const Vec2 r = read_vec2(o, "radii", Bounds::positive());
+    s.kind = PatternSpec::Kind::ellipse;
+    s.center = read_vec2(o, "center");
+    s.radii = read_vec2(o, "radii", Bounds::positive());
+    s.angle_degrees = degrees(o);
     if (o.has("ring_width"))
-      return make_ellipse_ring(
-          c, r.x(), r.y(), degrees(o),
-          o.number("ring_width", std::nullopt, Bounds::positive()) * units::mm);
-    return make_ellipse(c, r.x(), r.y(), degrees(o));
-  }
-  if (kind == "circle") {
+      s.ring_width = o.number("ring_width", std::nullopt, Bounds::positive()) * units::mm;
+  } else if (kind == "circle") {
     const JsonObject o(body, ptr, kCircleKeys);
-    const double r = o.number("radius", std::nullopt, Bounds::positive()) * units::mm;
-    return make_ellipse(read_vec2(o, "center"), r, r, 0.0);
-  }
-  if (kind == "hyperbola") {
+    s.kind = PatternSpec::Kind::circle;
+    s.radius = o.number("radius", std::nullopt, Bounds::positive()) * units::mm;
+    s.center = read_vec2(o, "center");
+  } else if (kind == "hyperbola") {
     const JsonObject o(body, ptr, kHyperbolaKeys);
-    const Vec2 c = read_vec2(o, "center");
-    const double a = o.number("a", std::nullopt, Bounds::positive()) * units::mm;
-    const double b = o.number("b", std::nullopt, Bounds::positive()) * units::mm;
-    const double width = o.number("width", std::nullopt, Bounds::positive()) * units::mm;
-    const std::string opens = o.string("opens", "x", {"x", "y", "both"});
-    const double reach = frame_size.norm();
-    if (opens == "both")
-      return make_union({make_hyperbola(c, a, b, degrees(o), width, true, reach),
-                         make_hyperbola(c, a, b, degrees(o), width, false, reach)});
-    return make_hyperbola(c, a, b, degrees(o), width, opens == "x", reach);
-  }
-  if (kind == "polygon") {
+    s.kind = PatternSpec::Kind::hyperbola;
+    s.center = read_vec2(o, "center");
+    s.a = o.number("a", std::nullopt, Bounds::positive()) * units::mm;
+    s.b = o.number("b", std::nullopt, Bounds::positive()) * units::mm;
+    s.width = o.number("width", std::nullopt, Bounds::positive()) * units::mm;
+    s.opens = o.string("opens", "x", {"x", "y", "both"});
+    s.angle_degrees = degrees(o);
+  } else if (kind == "polygon") {
     const JsonObject o(body, ptr, kPolygonKeys);
-    return make_polygon(read_points(o, "points", 3));
+    s.kind = PatternSpec::Kind::polygon;
+    s.points = read_points(o, "points", 3);
+  } else {
+    read_image(JsonObject(body, ptr, kImageKeys), base_dir, s);
   }
-  // image
-  const JsonObject o(body, ptr, kImageKeys);
-  const std::string file = o.string("file", std::nullopt);
-  const std::filesystem::path path = base_dir / file;
-  const GreyImage img = load_grey_image(path, o.pointer("file"));
-  const Vec2 origin = o.has("origin") ? read_vec2(o, "origin") : Vec2::Zero();
-  const Vec2 size = o.has("size") ? read_vec2(o, "size", Bounds::positive()) : frame_size;
-  return make_raster(img.value, img.width, img.height, origin, size,
-                     o.number("threshold", 0.5, Bounds::between(0.0, 1.0)),
-                     o.boolean("invert", false));
+  return s;
+}
+
+PatternPtr read_pattern(const json& j, const std::string& pointer,
+                        const std::filesystem::path& base_dir, const Vec2& frame_size) {
+  return make_pattern(read_pattern_spec(j, pointer, base_dir), frame_size);
 }
 
 std::map<std::string, std::vector<std::string>> pattern_known_keys() {

@@ -251,7 +251,8 @@ void parse_grow(const JsonObject& o, const std::filesystem::path& base_dir, cons
   }
   GrowSpec& g = step.grow;
   g.center = ctx.center;
-  g.factor = read_field(o.at("factor"), o.pointer("factor"), base_dir, ctx);
+  step.grow_factor = read_field_spec(o.at("factor"), o.pointer("factor"), base_dir);
+  g.factor = build_field(step.grow_factor, o.pointer("factor"), ctx);
   const int nx = 2 * scene.grid.nx - 1, ny = 2 * scene.grid.ny - 1;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
@@ -278,7 +279,10 @@ void parse_grow(const JsonObject& o, const std::filesystem::path& base_dir, cons
                 : dir == "radial" ? GrowDirection::radial
                 : dir == "hoop"   ? GrowDirection::hoop
                                   : GrowDirection::all;
-  if (o.has("region")) g.region = read_pattern(o.at("region"), o.pointer("region"), base_dir, size);
+  if (o.has("region")) {
+    step.grow_region = read_pattern_spec(o.at("region"), o.pointer("region"), base_dir);
+    g.region = make_pattern(*step.grow_region, size);
+  }
   parse_path(o, step);
 }
 
@@ -350,8 +354,8 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
       const JsonObject o(arr[i], ptr, kImpregnateKeys);
       step.kind = ProtocolStep::Kind::impregnate;
       const Vec2 frame(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height);
-      step.pattern_json = o.at("pattern");
-      step.pattern = read_pattern(o.at("pattern"), o.pointer("pattern"), base_dir, frame);
+      step.pattern_spec = read_pattern_spec(o.at("pattern"), o.pointer("pattern"), base_dir);
+      step.pattern = make_pattern(step.pattern_spec, frame);
       const Box2 inside = step.pattern->bounds().intersect({Vec2::Zero(), frame});
       if (inside.empty() || inside.max.x() <= inside.min.x() || inside.max.y() <= inside.min.y()) {
         std::ostringstream msg;
@@ -387,7 +391,8 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
       FormulaContext ctx;
       ctx.size = Vec2(scene.grid.width, scene.grid.height);
       ctx.center = 0.5 * ctx.size;
-      const ScalarField per_mm2 = read_field(o.at("K"), o.pointer("K"), base_dir, ctx);
+      step.curvature_spec = read_field_spec(o.at("K"), o.pointer("K"), base_dir);
+      const ScalarField per_mm2 = build_field(step.curvature_spec, o.pointer("K"), ctx);
       step.curvature = [per_mm2](const Vec2& p) { return per_mm2(p) / (units::mm * units::mm); };
       for (int jj = 0; jj < scene.grid.ny; ++jj)
         for (int ii = 0; ii < scene.grid.nx; ++ii) {
@@ -412,7 +417,8 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
       const JsonObject o(arr[i], ptr, kAddSpringsKeys);
       step.kind = ProtocolStep::Kind::add_springs;
       const Vec2 frame(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height);
-      step.add.region = read_pattern(o.at("pattern"), o.pointer("pattern"), base_dir, frame);
+      step.add_region = read_pattern_spec(o.at("pattern"), o.pointer("pattern"), base_dir);
+      step.add.region = make_pattern(step.add_region, frame);
       const std::string along = o.string("along", "stretch", {"stretch", "shear", "flex", "any"});
       step.add.along = along == "any" ? std::optional<SpringFamily>() : spring_family(along);
       step.add.count = static_cast<int>(o.integer("count", 1, 1, 1000));
@@ -447,7 +453,8 @@ void parse_protocol(const JsonObject& top, const std::map<std::string, Material>
           throw InputError(o.pointer("line"), "the cut lies outside the sheet " + where.str());
       }
       if (o.has("hole")) {
-        step.hole = read_pattern(o.at("hole"), o.pointer("hole"), base_dir, frame);
+        step.hole_spec = read_pattern_spec(o.at("hole"), o.pointer("hole"), base_dir);
+        step.hole = make_pattern(*step.hole_spec, frame);
         if (outside(step.hole->bounds()))
           throw InputError(o.pointer("hole"), "the hole lies outside the sheet " + where.str());
       }
@@ -485,7 +492,6 @@ void parse_output(const JsonObject& top, OutputSpec& out) {
 
 Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   Scene scene;
-  scene.source = j;
   const JsonObject top(j, "", kTopKeys);
   scene.name = top.string("name", "untitled");
   scene.description = top.string("description", "");

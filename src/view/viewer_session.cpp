@@ -6,6 +6,7 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
+#include "membra/io/scene_writer.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/process/steps.hpp"
@@ -16,12 +17,10 @@ namespace {
 
 constexpr size_t kMaxUndo = 40;  // snapshots kept (a 64 x 64 membrane is about 2 MB each)
 
-nlohmann::json mm(const Vec2& p) {
-  return {p.x() / units::mm, p.y() / units::mm};
-}
-
-nlohmann::json circle_json(const Vec2& centre, double radius) {
-  return {{"circle", {{"center", mm(centre)}, {"radius", radius / units::mm}}}};
+ProtocolStep step_of(ProtocolStep::Kind kind) {
+  ProtocolStep s;
+  s.kind = kind;
+  return s;
 }
 
 StaticOptions relax_options(const Scene& scene, double force_scale) {
@@ -58,10 +57,6 @@ ViewerSession::ViewerSession(Scene scene)
   params_.D = scene_.simulation.damping;
   if (const ProtocolStep* s = first_step(ProtocolStep::Kind::stretch)) params_.lambda = s->lambda;
   if (!scene_.simulation.is_static()) mode_ = LiveMode::dynamics;
-  if (const ProtocolStep* s = first_step(ProtocolStep::Kind::impregnate)) {
-    const size_t i = static_cast<size_t>(s - scene_.protocol.data());
-    material_name_ = scene_.source["protocol"][i].value("material", "epoxy");
-  }
 }
 
 const ProtocolStep* ViewerSession::first_step(ProtocolStep::Kind kind) const {
@@ -70,41 +65,35 @@ const ProtocolStep* ViewerSession::first_step(ProtocolStep::Kind kind) const {
   return nullptr;
 }
 
-PatternPtr ViewerSession::resin_pattern() const {
-  PatternPtr p = scene_pattern_used_ ? nullptr : scene_pattern(scene_);
+std::optional<PatternSpec> ViewerSession::resin_pattern_spec() const {
+  std::optional<PatternSpec> p;  // nothing yet
+  if (!scene_pattern_used_) {
+    std::vector<PatternSpec> parts;
+    for (const ProtocolStep& s : scene_.protocol)
+      if (s.kind == ProtocolStep::Kind::impregnate) parts.push_back(s.pattern_spec);
+    if (parts.size() == 1) p = parts[0];
+    if (parts.size() > 1) p = union_spec(std::move(parts));
+  }
   for (const Stroke& s : strokes_) {
-    const PatternPtr disc = make_ellipse(s.centre, s.radius, s.radius, 0.0);
+    PatternSpec disc = circle_spec(s.centre, s.radius);
     if (s.erase) {
-      if (p) p = make_difference({p, disc});
+      if (p) p = difference_spec({*p, disc});
+    } else if (!p) {
+      p = disc;
+    } else if (p->kind == PatternSpec::Kind::union_of) {
+      p->parts.push_back(disc);  // consecutive strokes stay one flat union
     } else {
-      p = p ? make_union({p, disc}) : disc;
+      p = union_spec({*p, disc});
     }
   }
   return p;
 }
 
-nlohmann::json ViewerSession::resin_pattern_json() const {
-  nlohmann::json p;  // null: nothing yet
-  if (!scene_pattern_used_) {
-    nlohmann::json parts = nlohmann::json::array();
-    for (const ProtocolStep& s : scene_.protocol)
-      if (s.kind == ProtocolStep::Kind::impregnate) parts.push_back(s.pattern_json);
-    if (parts.size() == 1) p = parts[0];
-    if (parts.size() > 1) p = {{"union", parts}};
-  }
-  for (const Stroke& s : strokes_) {
-    const nlohmann::json disc = circle_json(s.centre, s.radius);
-    if (s.erase) {
-      if (!p.is_null()) p = {{"difference", {p, disc}}};
-    } else if (p.is_null()) {
-      p = disc;
-    } else if (p.contains("union")) {
-      p["union"].push_back(disc);  // consecutive strokes stay one flat union
-    } else {
-      p = {{"union", {p, disc}}};
-    }
-  }
-  return p;
+PatternPtr ViewerSession::resin_pattern() const {
+  const auto spec = resin_pattern_spec();
+  if (!spec) return nullptr;
+  const Box2 frame = scene_frame(scene_);
+  return make_pattern(*spec, frame.max - frame.min);
 }
 
 ViewerSession::Snapshot ViewerSession::snapshot() const {
@@ -171,40 +160,35 @@ std::string ViewerSession::stretch() {
   if (!(l.x() > 0.0 && l.y() > 0.0 && l.x() <= 10.0 && l.y() <= 10.0))
     return "the stretch ratios must be within (0, 10]";
   push_undo();
-  FrameEdges hold;
-  nlohmann::json step = {{"step", "stretch"}, {"lambda", {l.x(), l.y()}}};
-  if (const ProtocolStep* s = first_step(ProtocolStep::Kind::stretch)) {
-    hold = s->hold;
-    nlohmann::json edges = nlohmann::json::array();
-    for (auto [on, name] : {std::pair{hold.left, "left"}, std::pair{hold.right, "right"},
-                            std::pair{hold.bottom, "bottom"}, std::pair{hold.top, "top"}})
-      if (on) edges.push_back(name);
-    if (edges.size() < 4) step["hold"] = edges;
-  }
-  stretch_frame(prepared_.membrane, l.x(), l.y(), hold);
+  ProtocolStep step = step_of(ProtocolStep::Kind::stretch);
+  step.lambda = l;
+  if (const ProtocolStep* s = first_step(ProtocolStep::Kind::stretch)) step.hold = s->hold;
+  StepEffects effects;
+  apply_stretch(prepared_.membrane, step, effects);
   log_.push_back(step);
   stage_ = Stage::stretched;
   model_changed();
   return "";
 }
 
-std::string ViewerSession::impregnate_with(const PatternPtr& pattern, const nlohmann::json& json,
-                                           const ProtocolStep* s) {
-  const Material resin = s ? s->resin : epoxy();
-  const int side = s ? s->resin_side : +1;
-  const bool bilayer = s && s->bilayer;
+std::string ViewerSession::impregnate_with(const PatternSpec& pattern, const ProtocolStep* s) {
+  ProtocolStep step = step_of(ProtocolStep::Kind::impregnate);
+  step.resin = s ? s->resin : epoxy();
+  step.resin_side = s ? s->resin_side : +1;
+  step.bilayer = s && s->bilayer;
+  step.pattern_spec = pattern;
+  const Box2 frame = scene_frame(scene_);
+  step.pattern = make_pattern(pattern, frame.max - frame.min);
   push_undo();
-  const int n = membra::impregnate(prepared_.membrane, *pattern, resin, side, bilayer);
-  if (n == 0) {
+  try {
+    StepEffects effects;
+    apply_impregnate(prepared_.membrane, step, effects);
+  } catch (const InputError&) {
     restore(undo_.back());
     undo_.pop_back();
     return "the resin pattern covers no spring of the sheet";
   }
-  log_.push_back({{"step", "impregnate"},
-                  {"pattern", json},
-                  {"material", material_name_},
-                  {"resin_side", side > 0 ? "top" : "bottom"},
-                  {"bilayer", bilayer}});
+  log_.push_back(step);
   stage_ = Stage::impregnated;
   model_changed();
   return "";
@@ -213,11 +197,9 @@ std::string ViewerSession::impregnate_with(const PatternPtr& pattern, const nloh
 std::string ViewerSession::impregnate() {
   if (stage_ == Stage::flat) return "stretch the sheet before impregnating it";
   if (stage_ == Stage::released) return "the sheet is released: resin goes on the stretched sheet";
-  const PatternPtr pattern = resin_pattern();
+  const auto pattern = resin_pattern_spec();
   if (!pattern) return "there is no resin to apply: paint some first";
-  const nlohmann::json json = resin_pattern_json();
-  const std::string why =
-      impregnate_with(pattern, json, first_step(ProtocolStep::Kind::impregnate));
+  const std::string why = impregnate_with(*pattern, first_step(ProtocolStep::Kind::impregnate));
   if (!why.empty()) return why;
   // What was applied is used up; the next strokes start a new pattern.
   strokes_.clear();
@@ -234,10 +216,9 @@ std::string ViewerSession::release() {
   const ProtocolStep& r = s ? *s : defaults;
   StepEffects effects;
   start_path(apply_release(prepared_.membrane, r, effects));
-  log_.push_back({{"step", "release"},
-                  {"increments", r.increments},
-                  {"perturbation", r.perturbation / units::mm},
-                  {"seed", r.seed}});
+  ProtocolStep logged = r;
+  logged.kind = ProtocolStep::Kind::release;
+  log_.push_back(logged);
   stage_ = Stage::released;
   model_changed();
   return "";
@@ -262,7 +243,9 @@ std::string ViewerSession::cut(const Vec2& a, const Vec2& b) {
     undo_.pop_back();
     return "the cut crosses no spring of the sheet";
   }
-  log_.push_back({{"step", "cut"}, {"line", {mm(a), mm(b)}}});
+  ProtocolStep step = step_of(ProtocolStep::Kind::cut);
+  step.cut_line = {a, b};
+  log_.push_back(step);
   model_changed();
   return "";
 }
@@ -270,8 +253,11 @@ std::string ViewerSession::cut(const Vec2& a, const Vec2& b) {
 std::string ViewerSession::hole(const Vec2& centre, double radius) {
   if (!(radius > 0.0) || !centre.allFinite()) return "the hole needs a positive radius";
   push_undo();
+  ProtocolStep step = step_of(ProtocolStep::Kind::cut);
+  step.hole_spec = circle_spec(centre, radius);
+  step.hole = make_pattern(*step.hole_spec, Vec2::Zero());
   try {
-    const int n = punch_hole(prepared_.membrane, *make_ellipse(centre, radius, radius, 0.0));
+    const int n = punch_hole(prepared_.membrane, *step.hole);
     if (n == 0) {
       undo_.pop_back();
       return "the hole covers no particle of the sheet";
@@ -281,7 +267,7 @@ std::string ViewerSession::hole(const Vec2& centre, double radius) {
     undo_.pop_back();
     return e.what();
   }
-  log_.push_back({{"step", "cut"}, {"hole", circle_json(centre, radius)}});
+  log_.push_back(step);
   model_changed();
   return "";
 }
@@ -302,7 +288,10 @@ std::string ViewerSession::toggle_pin(const Vec2& at) {
   if (p < 0) return "the sheet has no particle";
   Membrane& m = prepared_.membrane;
   const Vec2 paper = m.sheet.model.reference.col(p).head<2>();
-  const nlohmann::json pin = {{"point", mm(paper)}};
+  auto is_mine = [&](const ProtocolStep& s) {
+    return s.kind == ProtocolStep::Kind::load && s.pins.size() == 1 &&
+           s.pins[0].kind == PinSpec::Kind::point && (s.pins[0].point - paper).norm() < 1e-12;
+  };
   const auto mine = std::find_if(viewer_pins_.begin(), viewer_pins_.end(),
                                  [&](const Vec2& q) { return (q - paper).norm() < 1e-12; });
   if (m.sheet.model.pinned(p) && mine == viewer_pins_.end())
@@ -312,17 +301,18 @@ std::string ViewerSession::toggle_pin(const Vec2& at) {
     m.sheet.model.unpin(p);
     viewer_pins_.erase(mine);
     // Its pin leaves the log again, so the saved scene does not pin it.
-    for (auto it = log_.begin(); it != log_.end(); ++it)
-      if ((*it)["step"] == "load" && it->contains("pins") && (*it)["pins"].size() == 1 &&
-          (*it)["pins"][0] == pin) {
-        log_.erase(it);
-        break;
-      }
+    const auto it = std::find_if(log_.begin(), log_.end(), is_mine);
+    if (it != log_.end()) log_.erase(it);
   } else {
     m.sheet.model.pin(p);
     m.state.v.col(p).setZero();
     viewer_pins_.push_back(paper);
-    log_.push_back({{"step", "load"}, {"pins", {pin}}});
+    ProtocolStep step = step_of(ProtocolStep::Kind::load);
+    PinSpec pin;
+    pin.kind = PinSpec::Kind::point;
+    pin.point = paper;
+    step.pins = {pin};
+    log_.push_back(step);
   }
   model_changed();
   return "";
@@ -333,7 +323,7 @@ void ViewerSession::reset() {
   prepared_ = prepare_scene(scene_);
   stage_ = Stage::flat;
   strokes_.clear();
-  log_ = nlohmann::json::array();
+  log_.clear();
   viewer_pins_.clear();
   path_ = Path{};
   path_done_ = 0;
@@ -471,11 +461,9 @@ void ViewerSession::play_scene_protocol() {
 }
 
 std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
-  const size_t index = static_cast<size_t>(&step - scene_.protocol.data());
-  // The log keeps the scene's step as written (with its defaults left out).
-  const nlohmann::json& written = scene_.source["protocol"][index];
+  // The log keeps the scene's own step.
   auto logged = [&](const std::string& why) {
-    if (why.empty() && !log_.empty()) log_.back() = written;
+    if (why.empty() && !log_.empty()) log_.back() = step;
     return why;
   };
   switch (step.kind) {
@@ -490,7 +478,7 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
       if (stage_ == Stage::flat || stage_ == Stage::released)
         return "impregnate needs the stretched sheet";
       scene_pattern_used_ = true;
-      return logged(impregnate_with(step.pattern, step.pattern_json, &step));
+      return logged(impregnate_with(step.pattern_spec, &step));
     case ProtocolStep::Kind::release:
       return logged(release());
     default:
@@ -505,7 +493,7 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
         return e.what();
       }
       if (step.kind == ProtocolStep::Kind::load && step.gravity) params_.G = *step.gravity;
-      log_.push_back(written);
+      log_.push_back(step);
       model_changed();
       return "";
   }
@@ -522,17 +510,22 @@ void ViewerSession::start_path(Path path) {
   path_.set(static_cast<double>(path_done_) / path_.increments);
 }
 
-nlohmann::json ViewerSession::to_scene_json() const {
-  nlohmann::json j = scene_.source;
-  j["protocol"] = log_;
+Scene ViewerSession::to_scene() const {
+  Scene s = scene_;
+  s.protocol = log_;
+  for (size_t i = 0; i < s.protocol.size(); ++i)
+    s.protocol[i].pointer = "/protocol/" + std::to_string(i);
   if (scene_.benchmark_n == 0) {
-    nlohmann::json& sim = j["simulation"];
-    sim["K"] = params_.K / units::N_per_mm;
-    sim["G"] = params_.G;
-    sim["T"] = params_.T;
-    sim["D"] = params_.D;
+    s.sheet.stretch_stiffness = params_.K;
+    s.simulation.gravity = params_.G;
+    s.simulation.dt = params_.T;
+    s.simulation.damping = params_.D;
   }
-  return j;
+  return s;
+}
+
+nlohmann::json ViewerSession::to_scene_json() const {
+  return write_scene(to_scene());
 }
 
 }  // namespace membra

@@ -117,8 +117,8 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   // The face and the bilayer reach the stencil's impregnate step.
   j["resin"]["resin_side"] = "bottom";
   j["resin"]["bilayer"] = true;
-  Stencil st;
-  st.squares.push_back({Vec2(10, 10), Vec2(50, 10), Vec2(50, 50), Vec2(10, 50)});
+  const Stencil st =
+      stencil_of({{Vec2(0.01, 0.01), Vec2(0.05, 0.01), Vec2(0.05, 0.05), Vec2(0.01, 0.05)}});
   const json coated = design_scene(parse_design(j), st);
   EXPECT_EQ(coated["protocol"][1]["resin_side"], "bottom");
   EXPECT_EQ(coated["protocol"][1]["bilayer"], true);

@@ -104,15 +104,15 @@ TEST(StencilLayout, PiecesAndGapsAreNeverNarrowerThanTheMinimumFeature) {
   StencilLayout l;
   l.cell = 0.02;
   l.min_feature = 0.004;
-  EXPECT_TRUE(layout_stencil([](const Vec2&) { return 0.0; }, frame, l).squares.empty());
+  EXPECT_TRUE(layout_stencil([](const Vec2&) { return 0.0; }, frame, l).pattern == nullptr);
   const Stencil full = layout_stencil([](const Vec2&) { return 1.0; }, frame, l);
   EXPECT_NEAR(full.resin_share, 1.0, 1e-12);
   EXPECT_EQ(full.pieces, 100);
   // A ramp of densities: each square's side is 0, the cell, or within [w, cell - w].
   const Stencil ramp = layout_stencil([](const Vec2& p) { return p.x() / 0.2; }, frame, l);
-  ASSERT_FALSE(ramp.squares.empty());
-  for (const auto& square : ramp.squares) {
-    const double side = (square[1].x() - square[0].x()) * 1e-3;  // corners in mm
+  ASSERT_EQ(ramp.spec.kind, PatternSpec::Kind::union_of);
+  for (const PatternSpec& square : ramp.spec.parts) {
+    const double side = square.points[1].x() - square.points[0].x();
     EXPECT_TRUE(std::abs(side - l.cell) < 1e-12 ||
                 (side >= l.min_feature - 1e-12 && side <= l.cell - l.min_feature + 1e-12))
         << side;

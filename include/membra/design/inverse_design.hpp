@@ -29,8 +29,6 @@ struct DesignSpec {
   std::string material = "latex", resin = "epoxy";
   std::string resin_side = "top";  // the face the stencil is applied to
   bool bilayer = false;            // resin on that face only (the composite curls; bilayer.hpp)
-  std::string materials_json;      // the design file's "materials" object as written, for the
-                                   // stencil's scene file ("" when it has none)
   StencilLayout layout;            // cell 20 mm, minimum feature 4 mm
   int evaluations = 24;            // forward simulations at most
   double budget = 900.0;           // s of wall time at most

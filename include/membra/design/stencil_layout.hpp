@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "membra/model/pattern.hpp"
+#include "membra/model/pattern_spec.hpp"
 
 namespace membra {
 
@@ -17,10 +18,8 @@ struct StencilLayout {
 };
 
 struct Stencil {
-  PatternPtr pattern;  // nullptr when no cell gets resin
-  // The pieces' corners in frame coordinates in mm, as the stencil's scene file holds them
-  // (`pattern` is made from exactly these numbers), in the order of its parts.
-  std::vector<std::array<Vec2, 4>> squares;
+  PatternPtr pattern;        // nullptr when no cell gets resin
+  PatternSpec spec;          // its description (the squares as polygons), when not empty
   double resin_share = 0.0;  // of the frame area inside the outline
   int pieces = 0;            // squares of resin
 };
@@ -31,5 +30,8 @@ struct Stencil {
 Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const Box2& frame,
                        const StencilLayout& layout,
                        const std::function<bool(const Vec2&)>& inside = {});
+
+// A stencil of the given squares (corners in frame coordinates, m): one polygon each.
+Stencil stencil_of(const std::vector<std::array<Vec2, 4>>& squares);
 
 }  // namespace membra

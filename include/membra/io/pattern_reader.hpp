@@ -9,12 +9,18 @@
 #include <nlohmann/json.hpp>
 
 #include "membra/model/pattern.hpp"
+#include "membra/model/pattern_spec.hpp"
 
 namespace membra {
 
-// Parses the pattern at `pointer`. Image paths are relative to `base_dir`. `frame_size` (m) is
-// the size of the stretched frame, used to extend hyperbola branches across it. Throws
-// InputError naming the JSON pointer of a bad value.
+// Parses the pattern at `pointer` into its description (images loaded). Image paths are relative
+// to `base_dir`. Throws InputError naming the JSON pointer of a bad value.
+PatternSpec read_pattern_spec(const nlohmann::json& j, const std::string& pointer,
+                              const std::filesystem::path& base_dir);
+
+// Parses the pattern at `pointer` and builds its shape. Image paths are relative to `base_dir`.
+// `frame_size` (m) is the size of the stretched frame, used to extend hyperbola branches across it.
+// Throws InputError naming the JSON pointer of a bad value.
 PatternPtr read_pattern(const nlohmann::json& j, const std::string& pointer,
                         const std::filesystem::path& base_dir, const Vec2& frame_size);
 

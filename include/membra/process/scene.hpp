@@ -9,13 +9,13 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "membra/geometry/grid_sheet.hpp"
 #include "membra/model/added_springs.hpp"
+#include "membra/model/field_spec.hpp"
 #include "membra/model/grow.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/model/pattern.hpp"
+#include "membra/model/pattern_spec.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/sheet.hpp"
 #include "membra/solve/solver.hpp"
@@ -68,7 +68,7 @@ struct ProtocolStep {
   FrameEdges hold;  // edges the frame holds
   // impregnate
   PatternPtr pattern;
-  nlohmann::json pattern_json;  // as written, for stencil export
+  PatternSpec pattern_spec;  // its description, to write the scene back
   Material resin;
   int resin_side = +1;   // +1 top, -1 bottom
   bool bilayer = false;  // resin on that face only: the composite curls on release
@@ -76,15 +76,20 @@ struct ProtocolStep {
   int increments = 10;           // static solver: steps of the quasi-static path
   double perturbation = 0.2e-3;  // m, symmetry-breaking bump
   std::uint64_t seed = 1;
-  // grow
+  // grow (its factor and region as described, to write the scene back)
   GrowSpec grow;
+  FieldSpec grow_factor;
+  std::optional<PatternSpec> grow_region;
   // add_springs (stiffness 0: the sheet's own stretch stiffness)
   AddSpringsSpec add;
+  PatternSpec add_region;
   // curvature_map: the target Gaussian curvature (1/m^2) at a paper position (m)
   std::function<double(const Vec2&)> curvature;
+  FieldSpec curvature_spec;  // 1/mm^2, as described
   // cut: a polyline (frame coordinates, m) and/or a hole
   std::vector<Vec2> cut_line;
   PatternPtr hole;
+  std::optional<PatternSpec> hole_spec;
   // load
   std::optional<double> gravity;  // m/s^2 along -z
   std::vector<PinSpec> pins;
@@ -102,7 +107,6 @@ struct Scene {
   SimulationSpec simulation;
   OutputSpec output;
   std::vector<ProtocolStep> protocol;  // empty: one solve of the sheet as built
-  nlohmann::json source;               // the JSON it was parsed from (after overrides)
 };
 
 // The union of every impregnate step's pattern (nullptr if none), and the frame box (m) it lies

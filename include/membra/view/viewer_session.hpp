@@ -7,6 +7,7 @@
 // stays responsive. Every action is also logged as a protocol step, so the session saves as an
 // ordinary scene that `membra run` reproduces.
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,11 +68,11 @@ class ViewerSession {
   // The pattern the next impregnate applies: the scene's impregnate patterns and the strokes
   // (nullptr when there is none). Frame coordinates.
   PatternPtr resin_pattern() const;
-  // The same pattern as scene JSON (mm), null when there is none.
-  nlohmann::json resin_pattern_json() const;
+  // The same pattern's description (nothing when there is none).
+  std::optional<PatternSpec> resin_pattern_spec() const;
   const std::vector<Stroke>& strokes() const { return strokes_; }
-  // The protocol steps done so far, as scene JSON.
-  const nlohmann::json& log() const { return log_; }
+  // The protocol steps done so far.
+  const std::vector<ProtocolStep>& log() const { return log_; }
 
   // The protocol buttons. Each returns "" or why it cannot be done now (then nothing changes).
   std::string stretch();
@@ -116,6 +117,8 @@ class ViewerSession {
   // The index of the particle whose current xy is nearest to `at`.
   int nearest_particle(const Vec2& at) const;
   // The session as a scene: the source scene with this session's protocol and K, G, T, D.
+  Scene to_scene() const;
+  // The same as a scene file (io/scene_writer.hpp).
   nlohmann::json to_scene_json() const;
 
  private:
@@ -123,7 +126,7 @@ class ViewerSession {
     Membrane membrane;
     Stage stage;
     std::vector<Stroke> strokes;
-    nlohmann::json log;
+    std::vector<ProtocolStep> log;
     Path path;
     int path_done;
     std::vector<Vec2> viewer_pins;
@@ -140,8 +143,7 @@ class ViewerSession {
   SliceReport advance_slice(long max_iterations, double max_seconds);
   // Applies `pattern` with the resin, face and bilayer of `step` (the scene's first impregnate
   // step for painted resin; epoxy on top, soaked through, when the scene has none).
-  std::string impregnate_with(const PatternPtr& pattern, const nlohmann::json& json,
-                              const ProtocolStep* step);
+  std::string impregnate_with(const PatternSpec& pattern, const ProtocolStep* step);
 
   Scene scene_;
   PreparedScene prepared_;
@@ -149,10 +151,9 @@ class ViewerSession {
   LiveParameters params_;
   LiveMode mode_ = LiveMode::relax;
   std::vector<Stroke> strokes_;
-  nlohmann::json log_ = nlohmann::json::array();
-  std::vector<Vec2> viewer_pins_;        // paper positions of particles pinned in the viewer
-  bool scene_pattern_used_ = false;      // the scene's impregnate patterns have been applied
-  std::string material_name_ = "epoxy";  // the resin of the scene's first impregnate step
+  std::vector<ProtocolStep> log_;
+  std::vector<Vec2> viewer_pins_;    // paper positions of particles pinned in the viewer
+  bool scene_pattern_used_ = false;  // the scene's impregnate patterns have been applied
   // The path being followed (release, grow, add_springs, curvature_map: process/path.hpp), and
   // how many of its increments are done.
   Path path_;
