@@ -41,8 +41,9 @@ double DensityParameters::operator()(const Vec2& p, const Box2& frame) const {
 Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil) {
   Scene scene = spec.scene;
   if (stencil.pattern) {
-    scene.protocol[1].pattern = stencil.pattern;
-    scene.protocol[1].pattern_spec = stencil.spec;
+    auto& resin = std::get<ImpregnateStep>(scene.protocol[1].step);
+    resin.pattern = stencil.pattern;
+    resin.pattern_spec = stencil.spec;
   } else {
     // No resin: stretch and release only, numbered as the scene file numbers them.
     scene.protocol.erase(scene.protocol.begin() + 1);

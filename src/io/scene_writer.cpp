@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <type_traits>
 
 #include "membra/core/units.hpp"
 #include "membra/model/material.hpp"
@@ -65,7 +66,7 @@ const char* direction_name(GrowDirection d) {
   return "all";
 }
 
-json write_path(const ProtocolStep& s, json j) {
+json write_path(const PathSettings& s, json j) {
   j["increments"] = s.increments;
   j["perturbation"] = in(s.perturbation, units::mm);
   j["seed"] = s.seed;
@@ -102,31 +103,31 @@ json write_hold(const FrameEdges& h) {
   return edges;
 }
 
-json write_grow(const ProtocolStep& s) {
+json write_grow(const GrowStep& s) {
   const GrowSpec& g = s.grow;
   json j = {{"step", "grow"},
-            {"factor", write_field(s.grow_factor)},
+            {"factor", write_field(s.factor)},
             {"family", g.family ? family_name(*g.family) : "all"},
             {"direction", direction_name(g.direction)},
             {"center", mm(g.center)}};
-  if (s.grow_region) j["region"] = write_pattern(*s.grow_region);
-  return write_path(s, j);
+  if (s.region) j["region"] = write_pattern(*s.region);
+  return write_path(s.path, j);
 }
 
-json write_add_springs(const ProtocolStep& s) {
+json write_add_springs(const AddSpringsStep& s) {
   const AddSpringsSpec& a = s.add;
   json j = {{"step", "add_springs"},
-            {"pattern", write_pattern(s.add_region)},
+            {"pattern", write_pattern(s.region)},
             {"along", a.along ? family_name(*a.along) : "any"},
             {"count", a.count},
             {"rest_factor", a.rest_factor}};
   if (a.stiffness > 0.0) j["stiffness"] = in(a.stiffness, units::N_per_mm);
-  return write_path(s, j);
+  return write_path(s.path, j);
 }
 
-json write_cut(const ProtocolStep& s) {
+json write_cut(const CutStep& s) {
   json j = {{"step", "cut"}};
-  if (!s.cut_line.empty()) j["line"] = mm_points(s.cut_line);
+  if (!s.line.empty()) j["line"] = mm_points(s.line);
   if (s.hole_spec) j["hole"] = write_pattern(*s.hole_spec);
   return j;
 }
@@ -146,7 +147,7 @@ bool same_material(const Material& a, const Material& b) {
 json write_materials(const Scene& scene) {
   std::map<std::string, Material> used = {{scene.sheet.material.name, scene.sheet.material}};
   for (const ProtocolStep& s : scene.protocol)
-    if (s.kind == ProtocolStep::Kind::impregnate) used[s.resin.name] = s.resin;
+    if (const auto* i = s.as<ImpregnateStep>()) used[i->resin.name] = i->resin;
   json out = json::object();
   for (const auto& [name, m] : used) {
     const auto preset = material_preset(name);
@@ -248,35 +249,34 @@ json write_field(const FieldSpec& s) {
   return nullptr;
 }
 
-json write_step(const ProtocolStep& s) {
-  switch (s.kind) {
-    case ProtocolStep::Kind::stretch:
-      return {{"step", "stretch"},
-              {"lambda", {s.lambda.x(), s.lambda.y()}},
-              {"hold", write_hold(s.hold)}};
-    case ProtocolStep::Kind::impregnate:
-      return {{"step", "impregnate"},
-              {"pattern", write_pattern(s.pattern_spec)},
-              {"material", s.resin.name},
-              {"resin_side", s.resin_side > 0 ? "top" : "bottom"},
-              {"bilayer", s.bilayer}};
-    case ProtocolStep::Kind::release:
-      return write_path(s, {{"step", "release"}});
-    case ProtocolStep::Kind::load: {
-      json j = {{"step", "load"}, {"pins", write_pins(s.pins)}};
-      if (s.gravity) j["gravity"] = *s.gravity;
-      return j;
-    }
-    case ProtocolStep::Kind::grow:
-      return write_grow(s);
-    case ProtocolStep::Kind::add_springs:
-      return write_add_springs(s);
-    case ProtocolStep::Kind::cut:
-      return write_cut(s);
-    case ProtocolStep::Kind::curvature_map:
-      return write_path(s, {{"step", "curvature_map"}, {"K", write_field(s.curvature_spec)}});
-  }
-  return json::object();
+json write_step(const ProtocolStep& step) {
+  return std::visit(
+      [](const auto& s) -> json {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, StretchStep>)
+          return {{"step", "stretch"},
+                  {"lambda", {s.lambda.x(), s.lambda.y()}},
+                  {"hold", write_hold(s.hold)}};
+        if constexpr (std::is_same_v<T, ImpregnateStep>)
+          return {{"step", "impregnate"},
+                  {"pattern", write_pattern(s.pattern_spec)},
+                  {"material", s.resin.name},
+                  {"resin_side", s.resin_side > 0 ? "top" : "bottom"},
+                  {"bilayer", s.bilayer}};
+        if constexpr (std::is_same_v<T, ReleaseStep>)
+          return write_path(s.path, {{"step", "release"}});
+        if constexpr (std::is_same_v<T, LoadStep>) {
+          json j = {{"step", "load"}, {"pins", write_pins(s.pins)}};
+          if (s.gravity) j["gravity"] = *s.gravity;
+          return j;
+        }
+        if constexpr (std::is_same_v<T, GrowStep>) return write_grow(s);
+        if constexpr (std::is_same_v<T, AddSpringsStep>) return write_add_springs(s);
+        if constexpr (std::is_same_v<T, CutStep>) return write_cut(s);
+        if constexpr (std::is_same_v<T, CurvatureMapStep>)
+          return write_path(s.path, {{"step", "curvature_map"}, {"K", write_field(s.field)}});
+      },
+      step.step);
 }
 
 json write_scene(const Scene& scene) {

@@ -27,7 +27,7 @@ RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
     const StepReport followed =
         follow_path(scene, r.prepared, s, effects.report.name, path, progress, recorder);
     effects.report.solve = followed.solve;
-    if (step.kind == ProtocolStep::Kind::curvature_map) curvature_field = step.curvature;
+    if (const auto* cm = step.as<CurvatureMapStep>()) curvature_field = cm->curvature;
     if (!record(std::move(effects.report))) break;
   }
   if (!r.solve.diverged) summarize_run(r, curvature_field);

@@ -5,7 +5,7 @@ namespace membra {
 PatternPtr scene_pattern(const Scene& scene) {
   std::vector<PatternPtr> parts;
   for (const auto& step : scene.protocol)
-    if (step.kind == ProtocolStep::Kind::impregnate) parts.push_back(step.pattern);
+    if (const auto* i = step.as<ImpregnateStep>()) parts.push_back(i->pattern);
   if (parts.empty()) return nullptr;
   return parts.size() == 1 ? parts[0] : make_union(parts);
 }
@@ -13,7 +13,7 @@ PatternPtr scene_pattern(const Scene& scene) {
 Box2 scene_frame(const Scene& scene) {
   Vec2 stretch(1.0, 1.0);
   for (const auto& step : scene.protocol)
-    if (step.kind == ProtocolStep::Kind::stretch) stretch = stretch.cwiseProduct(step.lambda);
+    if (const auto* st = step.as<StretchStep>()) stretch = stretch.cwiseProduct(st->lambda);
   return {Vec2::Zero(), Vec2(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height)};
 }
 

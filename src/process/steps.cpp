@@ -1,6 +1,7 @@
 #include "membra/process/steps.hpp"
 
 #include <stdexcept>
+#include <type_traits>
 
 #include "membra/core/input_error.hpp"
 #include "membra/model/added_springs.hpp"
@@ -34,148 +35,126 @@ Path nothing_to_solve() {
 
 }  // namespace
 
-const char* step_name(ProtocolStep::Kind kind) {
-  switch (kind) {
-    case ProtocolStep::Kind::stretch:
-      return "stretch";
-    case ProtocolStep::Kind::impregnate:
-      return "impregnate";
-    case ProtocolStep::Kind::release:
-      return "release";
-    case ProtocolStep::Kind::load:
-      return "load";
-    case ProtocolStep::Kind::grow:
-      return "grow";
-    case ProtocolStep::Kind::add_springs:
-      return "add_springs";
-    case ProtocolStep::Kind::cut:
-      return "cut";
-    case ProtocolStep::Kind::curvature_map:
-      return "curvature_map";
-  }
-  return "?";
-}
-
-Path apply_stretch(Membrane& m, const ProtocolStep& step, StepEffects&) {
+Path apply_stretch(Membrane& m, const StretchStep& step, StepEffects&) {
   stretch_frame(m, step.lambda.x(), step.lambda.y(), step.hold);
   return at_once();
 }
 
-Path apply_impregnate(Membrane& m, const ProtocolStep& step, StepEffects& out) {
+Path apply_impregnate(Membrane& m, const ImpregnateStep& step, const std::string& pointer,
+                      StepEffects& out) {
   out.report.resin_springs =
       impregnate(m, *step.pattern, step.resin, step.resin_side, step.bilayer);
   if (out.report.resin_springs == 0)
-    throw InputError(step.pointer + "/pattern",
+    throw InputError(pointer + "/pattern",
                      "the pattern covers no spring of the sheet (is it between grid nodes, or "
                      "outside the stretched sheet?)");
   return nothing_to_solve();
 }
 
-Path apply_release(Membrane& m, const ProtocolStep& step, StepEffects&) {
+Path apply_release(Membrane& m, const ReleaseStep& step, StepEffects&) {
   // The latex returns to its natural length along the path (time stepping: at once, from the
   // stretched state, as the paper's tool does).
-  perturb(m, step.perturbation, step.seed);
+  perturb(m, step.path.perturbation, step.path.seed);
   begin_release(m);
-  return {Path::Kind::gradual, step.increments, [&m](double t) { set_release_level(m, 1.0 - t); }};
+  return {Path::Kind::gradual, step.path.increments,
+          [&m](double t) { set_release_level(m, 1.0 - t); }};
 }
 
-Path apply_grow(Membrane& m, const ProtocolStep& step, StepEffects&) {
+Path apply_grow(Membrane& m, const GrowStep& step, const std::string& pointer, StepEffects&) {
   std::vector<double> ratios;
   try {
     ratios = growth_ratios(m, step.grow);
   } catch (const std::invalid_argument& e) {
-    throw InputError(step.pointer + "/factor", e.what());
+    throw InputError(pointer + "/factor", e.what());
   }
-  perturb(m, step.perturbation, step.seed);
-  return growth_path(m, std::move(ratios), step.increments);
+  perturb(m, step.path.perturbation, step.path.seed);
+  return growth_path(m, std::move(ratios), step.path.increments);
 }
 
-Path apply_curvature_map(Membrane& m, const ProtocolStep& step, StepEffects& out) {
+Path apply_curvature_map(Membrane& m, const CurvatureMapStep& step, const std::string& pointer,
+                         StepEffects& out) {
   const Model& model = m.sheet.model;
   std::vector<double> target(static_cast<size_t>(model.num_particles()));
   for (int q = 0; q < model.num_particles(); ++q)
     target[q] = step.curvature(model.reference.col(q).head<2>());
   const ConformalFactor cf = conformal_factor(m.sheet, target);
   CurvatureMapResult cm;
-  cm.step = step.pointer;
+  cm.step = pointer;
   cm.reached = cf.reached;
   cm.message = cf.message;
   out.curvature_map = cm;
   std::vector<double> ratios = conformal_growth(model, cf.u);
-  perturb(m, step.perturbation, step.seed);
-  return growth_path(m, std::move(ratios), step.increments);
+  perturb(m, step.path.perturbation, step.path.seed);
+  return growth_path(m, std::move(ratios), step.path.increments);
 }
 
-Path apply_add_springs(Membrane& m, const ProtocolStep& step, StepEffects& out) {
+Path apply_add_springs(Membrane& m, const AddSpringsStep& step, const std::string& pointer,
+                       StepEffects& out) {
   AddSpringsSpec spec = step.add;
   if (spec.stiffness <= 0.0) spec.stiffness = m.sheet.stiffness.stretch;
   const int first = m.sheet.model.springs.size();
   out.report.springs_added = add_springs(m, spec);
   if (out.report.springs_added == 0)
-    throw InputError(step.pointer + "/pattern",
+    throw InputError(pointer + "/pattern",
                      "the region covers no spring of the sheet (is it between grid nodes, or "
                      "outside the sheet?)");
   std::vector<double> start;
   const Springs& sp = m.sheet.model.springs;
   for (int k = first; k < sp.size(); ++k)
     start.push_back((m.state.x.col(sp.b[k]) - m.state.x.col(sp.a[k])).norm());
-  perturb(m, step.perturbation, step.seed);
-  return {Path::Kind::gradual, step.increments,
+  perturb(m, step.path.perturbation, step.path.seed);
+  return {Path::Kind::gradual, step.path.increments,
           [&m, first, start = std::move(start), factor = spec.rest_factor](double t) {
             set_added_springs_level(m, first, start, factor, t);
           }};
 }
 
-Path apply_cut(Membrane& m, const ProtocolStep& step, StepEffects& out) {
-  if (!step.cut_line.empty()) {
-    StressFeature f{step.pointer + "/line", "cut", {}};
-    out.report.springs_cut = cut_along(m, step.cut_line, &f.where);
+Path apply_cut(Membrane& m, const CutStep& step, const std::string& pointer, StepEffects& out) {
+  if (!step.line.empty()) {
+    StressFeature f{pointer + "/line", "cut", {}};
+    out.report.springs_cut = cut_along(m, step.line, &f.where);
     if (out.report.springs_cut == 0)
-      throw InputError(step.pointer + "/line", "the cut crosses no spring of the sheet");
+      throw InputError(pointer + "/line", "the cut crosses no spring of the sheet");
     out.features.push_back(std::move(f));
   }
   if (step.hole) {
-    StressFeature f{step.pointer + "/hole", "hole", {}};
+    StressFeature f{pointer + "/hole", "hole", {}};
     try {
       out.report.particles_removed = punch_hole(m, *step.hole, &f.where);
     } catch (const std::invalid_argument& e) {
-      throw InputError(step.pointer + "/hole", e.what());
+      throw InputError(pointer + "/hole", e.what());
     }
     if (out.report.particles_removed == 0)
-      throw InputError(step.pointer + "/hole", "the hole covers no particle of the sheet");
+      throw InputError(pointer + "/hole", "the hole covers no particle of the sheet");
     out.features.push_back(std::move(f));
   }
   return at_once();
 }
 
-Path apply_load(PreparedScene& p, const ProtocolStep& step, StepEffects&) {
+Path apply_load(PreparedScene& p, const LoadStep& step, const std::string& pointer, StepEffects&) {
   if (step.gravity) p.membrane.sheet.model.gravity = Vec3(0.0, 0.0, -*step.gravity);
-  p.pinned += pin(step.pins, step.pointer + "/pins", p);
+  p.pinned += pin(step.pins, pointer + "/pins", p);
   return at_once();
 }
 
 Path apply_step(PreparedScene& p, const ProtocolStep& step, StepEffects& out) {
-  out.report.name = step_name(step.kind);
+  out.report.name = step_name(step.kind());
   Membrane& m = p.membrane;
-  switch (step.kind) {
-    case ProtocolStep::Kind::stretch:
-      return apply_stretch(m, step, out);
-    case ProtocolStep::Kind::impregnate:
-      return apply_impregnate(m, step, out);
-    case ProtocolStep::Kind::release:
-      return apply_release(m, step, out);
-    case ProtocolStep::Kind::grow:
-      return apply_grow(m, step, out);
-    case ProtocolStep::Kind::curvature_map:
-      return apply_curvature_map(m, step, out);
-    case ProtocolStep::Kind::add_springs:
-      return apply_add_springs(m, step, out);
-    case ProtocolStep::Kind::cut:
-      return apply_cut(m, step, out);
-    case ProtocolStep::Kind::load:
-      return apply_load(p, step, out);
-  }
-  throw std::logic_error("unknown protocol step");
+  const std::string& at = step.pointer;
+  return std::visit(
+      [&](const auto& s) -> Path {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, StretchStep>) return apply_stretch(m, s, out);
+        if constexpr (std::is_same_v<T, ImpregnateStep>) return apply_impregnate(m, s, at, out);
+        if constexpr (std::is_same_v<T, ReleaseStep>) return apply_release(m, s, out);
+        if constexpr (std::is_same_v<T, LoadStep>) return apply_load(p, s, at, out);
+        if constexpr (std::is_same_v<T, GrowStep>) return apply_grow(m, s, at, out);
+        if constexpr (std::is_same_v<T, AddSpringsStep>) return apply_add_springs(m, s, at, out);
+        if constexpr (std::is_same_v<T, CutStep>) return apply_cut(m, s, at, out);
+        if constexpr (std::is_same_v<T, CurvatureMapStep>)
+          return apply_curvature_map(m, s, at, out);
+      },
+      step.step);
 }
 
 }  // namespace membra

@@ -17,12 +17,6 @@ namespace {
 
 constexpr size_t kMaxUndo = 40;  // snapshots kept (a 64 x 64 membrane is about 2 MB each)
 
-ProtocolStep step_of(ProtocolStep::Kind kind) {
-  ProtocolStep s;
-  s.kind = kind;
-  return s;
-}
-
 StaticOptions relax_options(const Scene& scene, double force_scale) {
   StaticOptions o;
   o.tolerance = scene.simulation.tolerance;
@@ -55,14 +49,8 @@ ViewerSession::ViewerSession(Scene scene)
   params_.G = scene_.simulation.gravity;
   params_.T = scene_.simulation.dt;
   params_.D = scene_.simulation.damping;
-  if (const ProtocolStep* s = first_step(ProtocolStep::Kind::stretch)) params_.lambda = s->lambda;
+  if (const auto* s = first_step<StretchStep>()) params_.lambda = s->lambda;
   if (!scene_.simulation.is_static()) mode_ = LiveMode::dynamics;
-}
-
-const ProtocolStep* ViewerSession::first_step(ProtocolStep::Kind kind) const {
-  for (const ProtocolStep& s : scene_.protocol)
-    if (s.kind == kind) return &s;
-  return nullptr;
 }
 
 std::optional<PatternSpec> ViewerSession::resin_pattern_spec() const {
@@ -70,7 +58,7 @@ std::optional<PatternSpec> ViewerSession::resin_pattern_spec() const {
   if (!scene_pattern_used_) {
     std::vector<PatternSpec> parts;
     for (const ProtocolStep& s : scene_.protocol)
-      if (s.kind == ProtocolStep::Kind::impregnate) parts.push_back(s.pattern_spec);
+      if (const auto* i = s.as<ImpregnateStep>()) parts.push_back(i->pattern_spec);
     if (parts.size() == 1) p = parts[0];
     if (parts.size() > 1) p = union_spec(std::move(parts));
   }
@@ -160,19 +148,19 @@ std::string ViewerSession::stretch() {
   if (!(l.x() > 0.0 && l.y() > 0.0 && l.x() <= 10.0 && l.y() <= 10.0))
     return "the stretch ratios must be within (0, 10]";
   push_undo();
-  ProtocolStep step = step_of(ProtocolStep::Kind::stretch);
+  StretchStep step;
   step.lambda = l;
-  if (const ProtocolStep* s = first_step(ProtocolStep::Kind::stretch)) step.hold = s->hold;
+  if (const auto* s = first_step<StretchStep>()) step.hold = s->hold;
   StepEffects effects;
   apply_stretch(prepared_.membrane, step, effects);
-  log_.push_back(step);
+  log_.push_back({"", step});
   stage_ = Stage::stretched;
   model_changed();
   return "";
 }
 
-std::string ViewerSession::impregnate_with(const PatternSpec& pattern, const ProtocolStep* s) {
-  ProtocolStep step = step_of(ProtocolStep::Kind::impregnate);
+std::string ViewerSession::impregnate_with(const PatternSpec& pattern, const ImpregnateStep* s) {
+  ImpregnateStep step;
   step.resin = s ? s->resin : epoxy();
   step.resin_side = s ? s->resin_side : +1;
   step.bilayer = s && s->bilayer;
@@ -182,13 +170,13 @@ std::string ViewerSession::impregnate_with(const PatternSpec& pattern, const Pro
   push_undo();
   try {
     StepEffects effects;
-    apply_impregnate(prepared_.membrane, step, effects);
+    apply_impregnate(prepared_.membrane, step, "", effects);
   } catch (const InputError&) {
     restore(undo_.back());
     undo_.pop_back();
     return "the resin pattern covers no spring of the sheet";
   }
-  log_.push_back(step);
+  log_.push_back({"", step});
   stage_ = Stage::impregnated;
   model_changed();
   return "";
@@ -199,7 +187,7 @@ std::string ViewerSession::impregnate() {
   if (stage_ == Stage::released) return "the sheet is released: resin goes on the stretched sheet";
   const auto pattern = resin_pattern_spec();
   if (!pattern) return "there is no resin to apply: paint some first";
-  const std::string why = impregnate_with(*pattern, first_step(ProtocolStep::Kind::impregnate));
+  const std::string why = impregnate_with(*pattern, first_step<ImpregnateStep>());
   if (!why.empty()) return why;
   // What was applied is used up; the next strokes start a new pattern.
   strokes_.clear();
@@ -211,14 +199,11 @@ std::string ViewerSession::release() {
   if (stage_ == Stage::flat) return "stretch the sheet before releasing it";
   if (stage_ == Stage::released) return "the sheet is already released";
   push_undo();
-  const ProtocolStep* s = first_step(ProtocolStep::Kind::release);
-  const ProtocolStep defaults;
-  const ProtocolStep& r = s ? *s : defaults;
+  const ReleaseStep* s = first_step<ReleaseStep>();
+  const ReleaseStep r = s ? *s : ReleaseStep{};
   StepEffects effects;
   start_path(apply_release(prepared_.membrane, r, effects));
-  ProtocolStep logged = r;
-  logged.kind = ProtocolStep::Kind::release;
-  log_.push_back(logged);
+  log_.push_back({"", r});
   stage_ = Stage::released;
   model_changed();
   return "";
@@ -243,9 +228,9 @@ std::string ViewerSession::cut(const Vec2& a, const Vec2& b) {
     undo_.pop_back();
     return "the cut crosses no spring of the sheet";
   }
-  ProtocolStep step = step_of(ProtocolStep::Kind::cut);
-  step.cut_line = {a, b};
-  log_.push_back(step);
+  CutStep step;
+  step.line = {a, b};
+  log_.push_back({"", step});
   model_changed();
   return "";
 }
@@ -253,7 +238,7 @@ std::string ViewerSession::cut(const Vec2& a, const Vec2& b) {
 std::string ViewerSession::hole(const Vec2& centre, double radius) {
   if (!(radius > 0.0) || !centre.allFinite()) return "the hole needs a positive radius";
   push_undo();
-  ProtocolStep step = step_of(ProtocolStep::Kind::cut);
+  CutStep step;
   step.hole_spec = circle_spec(centre, radius);
   step.hole = make_pattern(*step.hole_spec, Vec2::Zero());
   try {
@@ -267,7 +252,7 @@ std::string ViewerSession::hole(const Vec2& centre, double radius) {
     undo_.pop_back();
     return e.what();
   }
-  log_.push_back(step);
+  log_.push_back({"", step});
   model_changed();
   return "";
 }
@@ -289,8 +274,9 @@ std::string ViewerSession::toggle_pin(const Vec2& at) {
   Membrane& m = prepared_.membrane;
   const Vec2 paper = m.sheet.model.reference.col(p).head<2>();
   auto is_mine = [&](const ProtocolStep& s) {
-    return s.kind == ProtocolStep::Kind::load && s.pins.size() == 1 &&
-           s.pins[0].kind == PinSpec::Kind::point && (s.pins[0].point - paper).norm() < 1e-12;
+    const LoadStep* l = s.as<LoadStep>();
+    return l && l->pins.size() == 1 && l->pins[0].kind == PinSpec::Kind::point &&
+           (l->pins[0].point - paper).norm() < 1e-12;
   };
   const auto mine = std::find_if(viewer_pins_.begin(), viewer_pins_.end(),
                                  [&](const Vec2& q) { return (q - paper).norm() < 1e-12; });
@@ -307,12 +293,12 @@ std::string ViewerSession::toggle_pin(const Vec2& at) {
     m.sheet.model.pin(p);
     m.state.v.col(p).setZero();
     viewer_pins_.push_back(paper);
-    ProtocolStep step = step_of(ProtocolStep::Kind::load);
+    LoadStep step;
     PinSpec pin;
     pin.kind = PinSpec::Kind::point;
     pin.point = paper;
     step.pins = {pin};
-    log_.push_back(step);
+    log_.push_back({"", step});
   }
   model_changed();
   return "";
@@ -466,10 +452,10 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
     if (why.empty() && !log_.empty()) log_.back() = step;
     return why;
   };
-  switch (step.kind) {
+  switch (step.kind()) {
     case ProtocolStep::Kind::stretch: {
       const Vec2 keep = params_.lambda;
-      params_.lambda = step.lambda;
+      params_.lambda = step.as<StretchStep>()->lambda;
       const std::string why = stretch();
       params_.lambda = keep;
       return logged(why);
@@ -478,7 +464,8 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
       if (stage_ == Stage::flat || stage_ == Stage::released)
         return "impregnate needs the stretched sheet";
       scene_pattern_used_ = true;
-      return logged(impregnate_with(step.pattern_spec, &step));
+      return logged(
+          impregnate_with(step.as<ImpregnateStep>()->pattern_spec, step.as<ImpregnateStep>()));
     case ProtocolStep::Kind::release:
       return logged(release());
     default:
@@ -492,7 +479,7 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
         undo_.pop_back();
         return e.what();
       }
-      if (step.kind == ProtocolStep::Kind::load && step.gravity) params_.G = *step.gravity;
+      if (const auto* l = step.as<LoadStep>(); l && l->gravity) params_.G = *l->gravity;
       log_.push_back(step);
       model_changed();
       return "";

@@ -122,7 +122,7 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   const json coated = design_scene(parse_design(j), st);
   EXPECT_EQ(coated["protocol"][1]["resin_side"], "bottom");
   EXPECT_EQ(coated["protocol"][1]["bilayer"], true);
-  EXPECT_TRUE(parse_scene(coated).protocol[1].bilayer);
+  EXPECT_TRUE(parse_scene(coated).protocol[1].as<ImpregnateStep>()->bilayer);
 }
 
 TEST(InverseDesign, ObjAndHeightFieldTargetsWorkLikeTheAnalyticOnes) {

@@ -37,7 +37,7 @@ TEST_P(RoundTrip, ReadWriteReadGivesTheSameScene) {
   EXPECT_EQ(write_scene(second), written);
   ASSERT_EQ(second.protocol.size(), first.protocol.size());
   for (size_t i = 0; i < first.protocol.size(); ++i) {
-    EXPECT_EQ(second.protocol[i].kind, first.protocol[i].kind);
+    EXPECT_EQ(second.protocol[i].kind(), first.protocol[i].kind());
     EXPECT_EQ(second.protocol[i].pointer, first.protocol[i].pointer);
   }
   EXPECT_EQ(second.grid.width, first.grid.width);

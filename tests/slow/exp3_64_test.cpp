@@ -17,7 +17,8 @@ TEST(SlowExamples, Exp3ConvergesAt64x64WithStiffnessRatio2000) {
   // Epoxy E = 3000 MPa against latex 1.5 MPa.
   const Scene scene = load_scene(std::string(MEMBRA_SOURCE_DIR) + "/examples/exp3_parallel.json",
                                  {"sheet.resolution=[64,64]", "materials.epoxy.E=3000"});
-  ASSERT_DOUBLE_EQ(scene.protocol[1].resin.youngs_modulus / scene.sheet.material.youngs_modulus,
+  ASSERT_DOUBLE_EQ(scene.protocol[1].as<ImpregnateStep>()->resin.youngs_modulus /
+                       scene.sheet.material.youngs_modulus,
                    2000.0);
   const RunResult r = run_scene(scene);
   EXPECT_TRUE(r.solve.converged) << r.solve.message;

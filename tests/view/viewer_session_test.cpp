@@ -159,7 +159,7 @@ TEST(ViewerSession, CutsHolesAndPinsChangeTheSheetAndUndo) {
   EXPECT_NE(s.toggle_pin(Vec2(0, 50 * units::mm)), "");  // held by the frame
   // The log keeps the cut, not the pin that was taken back.
   ASSERT_EQ(s.log().size(), 2u);
-  EXPECT_EQ(s.log()[1].kind, ProtocolStep::Kind::cut);
+  EXPECT_EQ(s.log()[1].kind(), ProtocolStep::Kind::cut);
 }
 
 TEST(ViewerSession, LiveParametersChangeTheModel) {
@@ -282,9 +282,10 @@ TEST(ViewerSession, PaintedResinFollowsTheScenesBilayer) {
   ASSERT_EQ(s.impregnate(), "");
   EXPECT_GT(s.membrane().sheet.model.hinges.size(), 0);
   EXPECT_EQ(s.membrane().resin_side, -1);
-  const ProtocolStep& step = s.log().back();
-  EXPECT_TRUE(step.bilayer);
-  EXPECT_EQ(step.resin_side, -1);
+  const ImpregnateStep* step = s.log().back().as<ImpregnateStep>();
+  ASSERT_TRUE(step);
+  EXPECT_TRUE(step->bilayer);
+  EXPECT_EQ(step->resin_side, -1);
   const json written = s.to_scene_json()["protocol"].back();
   EXPECT_EQ(written["bilayer"], true);
   EXPECT_EQ(written["resin_side"], "bottom");

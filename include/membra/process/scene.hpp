@@ -10,14 +10,9 @@
 #include <vector>
 
 #include "membra/geometry/grid_sheet.hpp"
-#include "membra/model/added_springs.hpp"
-#include "membra/model/field_spec.hpp"
-#include "membra/model/grow.hpp"
-#include "membra/model/membrane.hpp"
-#include "membra/model/pattern.hpp"
-#include "membra/model/pattern_spec.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/sheet.hpp"
+#include "membra/process/protocol.hpp"
 #include "membra/solve/solver.hpp"
 
 namespace membra {
@@ -48,51 +43,6 @@ struct OutputSpec {
   double azimuth = -60.0;   // camera, degrees around +z from +x
   double elevation = 35.0;  // camera, degrees above the sheet
   int image_width = 1200, image_height = 900;
-};
-
-// One step of the process (docs/process.md), in SI.
-struct ProtocolStep {
-  enum class Kind {
-    stretch,
-    impregnate,
-    release,
-    load,
-    grow,
-    add_springs,
-    cut,
-    curvature_map
-  } kind = Kind::stretch;
-  std::string pointer;  // "/protocol/2", for messages
-  // stretch
-  Vec2 lambda{1.0, 1.0};
-  FrameEdges hold;  // edges the frame holds
-  // impregnate
-  PatternPtr pattern;
-  PatternSpec pattern_spec;  // its description, to write the scene back
-  Material resin;
-  int resin_side = +1;   // +1 top, -1 bottom
-  bool bilayer = false;  // resin on that face only: the composite curls on release
-  // release, grow, add_springs
-  int increments = 10;           // static solver: steps of the quasi-static path
-  double perturbation = 0.2e-3;  // m, symmetry-breaking bump
-  std::uint64_t seed = 1;
-  // grow (its factor and region as described, to write the scene back)
-  GrowSpec grow;
-  FieldSpec grow_factor;
-  std::optional<PatternSpec> grow_region;
-  // add_springs (stiffness 0: the sheet's own stretch stiffness)
-  AddSpringsSpec add;
-  PatternSpec add_region;
-  // curvature_map: the target Gaussian curvature (1/m^2) at a paper position (m)
-  std::function<double(const Vec2&)> curvature;
-  FieldSpec curvature_spec;  // 1/mm^2, as described
-  // cut: a polyline (frame coordinates, m) and/or a hole
-  std::vector<Vec2> cut_line;
-  PatternPtr hole;
-  std::optional<PatternSpec> hole_spec;
-  // load
-  std::optional<double> gravity;  // m/s^2 along -z
-  std::vector<PinSpec> pins;
 };
 
 struct Scene {

@@ -18,20 +18,22 @@ struct StepEffects {
   std::optional<CurvatureMapResult> curvature_map;  // curvature_map: target and reach
 };
 
-Path apply_stretch(Membrane& m, const ProtocolStep& step, StepEffects& out);
-Path apply_impregnate(Membrane& m, const ProtocolStep& step, StepEffects& out);
-Path apply_release(Membrane& m, const ProtocolStep& step, StepEffects& out);
-Path apply_grow(Membrane& m, const ProtocolStep& step, StepEffects& out);
-Path apply_curvature_map(Membrane& m, const ProtocolStep& step, StepEffects& out);
-Path apply_add_springs(Membrane& m, const ProtocolStep& step, StepEffects& out);
-Path apply_cut(Membrane& m, const ProtocolStep& step, StepEffects& out);
+// `pointer` ("/protocol/2") names the step in messages.
+Path apply_stretch(Membrane& m, const StretchStep& step, StepEffects& out);
+Path apply_impregnate(Membrane& m, const ImpregnateStep& step, const std::string& pointer,
+                      StepEffects& out);
+Path apply_release(Membrane& m, const ReleaseStep& step, StepEffects& out);
+Path apply_grow(Membrane& m, const GrowStep& step, const std::string& pointer, StepEffects& out);
+Path apply_curvature_map(Membrane& m, const CurvatureMapStep& step, const std::string& pointer,
+                         StepEffects& out);
+Path apply_add_springs(Membrane& m, const AddSpringsStep& step, const std::string& pointer,
+                       StepEffects& out);
+Path apply_cut(Membrane& m, const CutStep& step, const std::string& pointer, StepEffects& out);
 // load also pins: it needs the prepared scene's pin count.
-Path apply_load(PreparedScene& p, const ProtocolStep& step, StepEffects& out);
+Path apply_load(PreparedScene& p, const LoadStep& step, const std::string& pointer,
+                StepEffects& out);
 
 // The apply_<kind> of the step's kind.
 Path apply_step(PreparedScene& p, const ProtocolStep& step, StepEffects& out);
-
-// The step's kind as scenes write it ("stretch", "add_springs", ...).
-const char* step_name(ProtocolStep::Kind kind);
 
 }  // namespace membra

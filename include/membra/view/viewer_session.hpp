@@ -136,14 +136,20 @@ class ViewerSession {
   void restore(const Snapshot& s);
   void push_undo();
   void model_changed();
-  const ProtocolStep* first_step(ProtocolStep::Kind kind) const;
+  // The scene's first step of kind T, or nullptr.
+  template <class T>
+  const T* first_step() const {
+    for (const ProtocolStep& s : scene_.protocol)
+      if (const T* t = s.as<T>()) return t;
+    return nullptr;
+  }
   std::string apply_scene_step(const ProtocolStep& step);
   // Follows `path` from now on (at once in dynamics mode).
   void start_path(Path path);
   SliceReport advance_slice(long max_iterations, double max_seconds);
   // Applies `pattern` with the resin, face and bilayer of `step` (the scene's first impregnate
   // step for painted resin; epoxy on top, soaked through, when the scene has none).
-  std::string impregnate_with(const PatternSpec& pattern, const ProtocolStep* step);
+  std::string impregnate_with(const PatternSpec& pattern, const ImpregnateStep* step);
 
   Scene scene_;
   PreparedScene prepared_;
