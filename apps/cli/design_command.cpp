@@ -3,9 +3,10 @@
 #include <cstdio>
 #include <iostream>
 
+#include "membra/io/design_files.hpp"
 #include "membra/io/design_reader.hpp"
 #include "membra/io/output_set.hpp"
-#include "membra/render/design_outputs.hpp"
+#include "membra/render/design_pictures.hpp"
 
 namespace membra::cli {
 
@@ -26,7 +27,8 @@ int cmd_design(const DesignArgs& args) {
                   it.note.c_str());
     std::cerr << line;
   });
-  const std::string note = stage_design_outputs(r, out);
+  stage_design_files(r, out);
+  const std::string note = stage_design_pictures(r, out);
   out.commit();
   if (!note.empty()) std::cerr << "membra: warning: no PNG renders: " << note << "\n";
   if (!args.quiet)

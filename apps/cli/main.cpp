@@ -10,9 +10,10 @@
 #include "membra/core/input_error.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/report.hpp"
+#include "membra/io/run_files.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
-#include "membra/render/run_outputs.hpp"
+#include "membra/render/run_pictures.hpp"
 #include "membra/version.hpp"
 #include "membra/view/view_script.hpp"
 #include "progress_bar.hpp"
@@ -72,7 +73,8 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   if (r.curvature_map && !r.curvature_map->message.empty())
     std::cerr << "membra: warning: " << scene_file << ": " << r.curvature_map->step << ": "
               << r.curvature_map->message << "\n";
-  const std::string render_note = membra::stage_run_outputs(scene, r, opts, out);
+  membra::stage_run_files(scene, r, opts, out);
+  const std::string render_note = membra::stage_run_pictures(scene, r, opts, out);
   if (!render_note.empty()) std::cerr << "membra: warning: no PNG renders: " << render_note << "\n";
   out.commit();
   if (!quiet) {

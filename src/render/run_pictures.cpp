@@ -1,68 +1,44 @@
-#include "membra/render/run_outputs.hpp"
+#include "membra/render/run_pictures.hpp"
 
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
 
-#include "membra/io/obj.hpp"
-#include "membra/io/ply.hpp"
-#include "membra/io/stencil.hpp"
-#include "membra/measure/stress.hpp"
+#include "membra/measure/colormap.hpp"
 #include "membra/render/renderer.hpp"
 
 namespace membra {
+namespace {
 
-std::string stage_run_outputs(const Scene& scene, const RunResult& r, const PictureOptions& opts,
-                              OutputSet& out) {
+void add_png(OutputSet& out, const std::string& file, const Image& img) {
+  const auto png = encode_png(img);
+  out.add(file, [png](std::ostream& os) {
+    os.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  });
+}
+
+}  // namespace
+
+std::string stage_run_pictures(const Scene& scene, const RunResult& r, const PictureOptions& opts,
+                               OutputSet& out) {
   const auto& mesh = r.prepared.membrane.sheet;
   const auto& x = r.prepared.membrane.state.x;
-  out.add("final.obj", [&](std::ostream& os) { write_obj(os, x, mesh.triangles); });
-  // Colours on ranges symmetric about 0, so green is flat / unstressed: curvature red
-  // synclastic, blue anticlastic (at least +-1e-6 1/mm^2, radius 1 m); stress red tension,
-  // blue compression (at least +-1e-3 MPa).
-  std::vector<double> k_mm, stress_mpa;
-  for (double k : r.curvature.density) k_mm.push_back(k * 1e-6);  // 1/m^2 to 1/mm^2
-  for (double sv : vertex_stress(mesh.model, r.stress)) stress_mpa.push_back(sv * 1e-6);
-  auto [k_lo, k_hi] = symmetric_range(k_mm, 1e-6);
-  if (opts.curvature_range.size() == 2)
-    k_lo = opts.curvature_range[0], k_hi = opts.curvature_range[1];
-  auto [s_lo, s_hi] = symmetric_range(stress_mpa, 1e-3);
-  if (opts.stress_range.size() == 2) s_lo = opts.stress_range[0], s_hi = opts.stress_range[1];
-  const std::vector<Rgb> k_colors = colorize(k_mm, k_lo, k_hi);
-  out.add("final.ply", [&](std::ostream& os) {
-    write_ply(os, x, mesh.triangles, k_colors,
-              {{"gaussian_curvature", k_mm}, {"stress", stress_mpa}});
-  });
-  // The stencil at true scale (outlines traced every 0.25 mm).
-  if (const PatternPtr pattern = scene_pattern(scene)) {
-    const Box2 frame = scene_frame(scene);
-    const auto outlines = trace_outlines(*pattern, frame, 0.25e-3);
-    out.add("pattern.svg", [&](std::ostream& os) { write_svg(os, outlines, frame); });
-    out.add("pattern.dxf", [&](std::ostream& os) { write_dxf(os, outlines, frame); });
-    const auto png = encode_png(draw_pattern(*pattern, frame, 4.0));
-    out.add("pattern.png", [png](std::ostream& os) {
-      os.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-    });
-  }
+  const RunColors c = run_colors(r, opts);
+  const std::vector<Rgb> k_colors = colorize(c.curvature, c.k_lo, c.k_hi);
+  if (const PatternPtr pattern = scene_pattern(scene))
+    add_png(out, "pattern.png", draw_pattern(*pattern, scene_frame(scene), 4.0));
   std::string render_note;
   try {
     const OutputSpec& o = scene.output;
     const Camera camera{o.azimuth, o.elevation, 1.1};
     Renderer renderer(o.image_width, o.image_height);
-    auto add_png = [&](const std::string& file, const Image& img) {
-      const auto png = encode_png(img);
-      out.add(file, [png](std::ostream& os) {
-        os.write(reinterpret_cast<const char*>(png.data()),
-                 static_cast<std::streamsize>(png.size()));
-      });
-    };
     auto picture = [&](const std::string& file, const std::vector<Rgb>& colors,
                        const Legend& legend) {
-      add_png(file, renderer.render(x, mesh.triangles, colors, camera, &legend));
+      add_png(out, file, renderer.render(x, mesh.triangles, colors, camera, &legend));
     };
-    picture("curvature.png", k_colors, {"Gaussian curvature", "1/mm^2", k_lo, k_hi});
-    picture("stress.png", colorize(stress_mpa, s_lo, s_hi),
-            {"Stress (tension red)", "MPa", s_lo, s_hi});
+    picture("curvature.png", k_colors, {"Gaussian curvature", "1/mm^2", c.k_lo, c.k_hi});
+    picture("stress.png", colorize(c.stress, c.s_lo, c.s_hi),
+            {"Stress (tension red)", "MPa", c.s_lo, c.s_hi});
     if (r.curvature_map) {
       // Side by side on one colour range: the target map and the measured curvature on the flat
       // sheet (seen from above), and the form.
@@ -74,7 +50,7 @@ std::string stage_run_outputs(const Scene& scene, const RunResult& r, const Pict
       const int pw = 800, ph = 700;
       Renderer panel(pw, ph);
       const Camera above{-90.0, 89.9, 1.1};
-      const std::vector<Rgb> measured = colorize(k_mm, t_lo, t_hi);
+      const std::vector<Rgb> measured = colorize(c.curvature, t_lo, t_hi);
       Image side = blank_image(3 * pw, ph);
       blit(side,
            panel.render(mesh.model.reference, mesh.triangles, colorize(target_mm, t_lo, t_hi),
@@ -84,7 +60,7 @@ std::string stage_run_outputs(const Scene& scene, const RunResult& r, const Pict
            0);
       const Legend legend{"Target | measured | form", "1/mm^2", t_lo, t_hi};
       blit(side, panel.render(x, mesh.triangles, measured, camera, &legend), 2 * pw, 0);
-      add_png("curvature_map.png", side);
+      add_png(out, "curvature_map.png", side);
     }
     if (!r.frames.empty()) {
       // Frames share one stress range; the contact sheet tiles them six to a row (the paper's
@@ -105,11 +81,11 @@ std::string stage_run_outputs(const Scene& scene, const RunResult& r, const Pict
         const auto colors = colorize(mpa, f_lo, f_hi);
         char name[64];
         std::snprintf(name, sizeof name, "frames/frame_%03zu.png", i + 1);
-        add_png(name, renderer.render(r.frames[i].x, mesh.triangles, colors, camera, &legend));
+        add_png(out, name, renderer.render(r.frames[i].x, mesh.triangles, colors, camera, &legend));
         blit(sheet, tiles.render(r.frames[i].x, mesh.triangles, colors, camera, nullptr),
              static_cast<int>(i) % cols * tw, static_cast<int>(i) / cols * th);
       }
-      add_png("contact_sheet.png", sheet);
+      add_png(out, "contact_sheet.png", sheet);
     }
   } catch (const RenderError& e) {
     render_note = e.what();

@@ -1,0 +1,32 @@
+#pragma once
+// The files of a finished run, staged in an OutputSet: the meshes and the stencil (the pictures
+// are render/run_pictures.hpp's).
+#include <vector>
+
+#include "membra/io/output_set.hpp"
+#include "membra/process/run.hpp"
+
+namespace membra {
+
+// Colour ranges the user fixed (`--curvature-range`, `--stress-range`).
+struct PictureOptions {
+  std::vector<double> curvature_range;  // [lo, hi] in 1/mm^2, or empty for automatic
+  std::vector<double> stress_range;     // [lo, hi] in MPa, or empty for automatic
+};
+
+// A run's values per particle in the outputs' units, and the colour ranges: symmetric about 0,
+// so that green is flat / unstressed (at least +-1e-6 1/mm^2, radius 1 m; +-1e-3 MPa), unless
+// the user fixed them.
+struct RunColors {
+  std::vector<double> curvature;  // 1/mm^2
+  std::vector<double> stress;     // MPa
+  double k_lo = 0.0, k_hi = 0.0, s_lo = 0.0, s_hi = 0.0;
+};
+RunColors run_colors(const RunResult& r, const PictureOptions& opts);
+
+// Stages final.obj, final.ply (curvature colours, curvature and stress properties) and, when
+// the scene has resin, the stencil pattern.svg and pattern.dxf, in `out` (not committed).
+void stage_run_files(const Scene& scene, const RunResult& r, const PictureOptions& opts,
+                     OutputSet& out);
+
+}  // namespace membra

@@ -1,0 +1,17 @@
+#pragma once
+// The pictures of a finished run: curvature.png, stress.png, pattern.png, and when the scene
+// asks for them curvature_map.png, the animation frames and their contact sheet.
+#include <string>
+
+#include "membra/io/output_set.hpp"
+#include "membra/io/run_files.hpp"
+#include "membra/process/run.hpp"
+
+namespace membra {
+
+// Stages the pictures in `out` (not committed). Returns "" or, when no OpenGL is available, why
+// the renders were skipped (pattern.png, drawn without OpenGL, is staged anyway).
+std::string stage_run_pictures(const Scene& scene, const RunResult& r, const PictureOptions& opts,
+                               OutputSet& out);
+
+}  // namespace membra

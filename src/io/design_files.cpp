@@ -1,0 +1,58 @@
+#include "membra/io/design_files.hpp"
+
+#include "membra/core/units.hpp"
+#include "membra/io/obj.hpp"
+#include "membra/io/report.hpp"
+
+namespace membra {
+
+nlohmann::json make_design_report(const DesignResult& d) {
+  nlohmann::json report = make_report(d.scene, d.run);
+  auto params = [](const DensityParameters& p) {
+    return nlohmann::json{{"mean", p.mean}, {"radial", p.radial}, {"anisotropy", p.anisotropy}};
+  };
+  nlohmann::json iterations = nlohmann::json::array();
+  for (const DesignIteration& it : d.history)
+    iterations.push_back({{"index", it.index},
+                          {"rms_error", it.rms_error},
+                          {"max_error", it.max_error},
+                          {"resin_share", it.resin_share},
+                          {"pieces", it.pieces},
+                          {"seconds", it.seconds},
+                          {"best", it.best},
+                          {"note", it.note},
+                          {"parameters", params(it.parameters)}});
+  report["design"] = {
+      {"rms_error", d.rms_error},
+      {"max_error", d.max_error},
+      {"error_unit", "% of the target's diameter (square: side), after rigid alignment"},
+      {"flat_error", d.flat_error},
+      {"reachable", d.reachable},
+      {"message", d.message},
+      {"target",
+       {{"kind", d.target.kind},
+        {"diameter_mm", d.target.diameter / units::mm},
+        {"area_mm2", d.target.area / (units::mm * units::mm)}}},
+      {"stencil",
+       {{"pieces", d.stencil.pieces},
+        {"resin_share", d.stencil.resin_share},
+        {"cell_mm", d.spec.layout.cell / units::mm},
+        {"min_feature_mm", d.spec.layout.min_feature / units::mm}}},
+      {"start", params(d.start)},
+      {"best", params(d.best)},
+      {"evaluations", d.history.size()},
+      {"seconds", d.seconds},
+      {"iterations", iterations}};
+  return report;
+}
+
+void stage_design_files(const DesignResult& d, OutputSet& out) {
+  const nlohmann::json scene_file = design_scene(d.spec, d.stencil);
+  out.add("scene.json", [scene_file](std::ostream& os) { os << scene_file.dump(2) << '\n'; });
+  out.add("target.obj", [&](std::ostream& os) { write_obj(os, d.target.x, d.target.triangles); });
+  const nlohmann::json report = make_design_report(d);
+  out.add("report.json", [report](std::ostream& os) { os << report.dump(2) << '\n'; });
+  stage_run_files(d.scene, d.run, {}, out);
+}
+
+}  // namespace membra

@@ -1,0 +1,44 @@
+#include "membra/io/run_files.hpp"
+
+#include "membra/io/obj.hpp"
+#include "membra/io/ply.hpp"
+#include "membra/io/stencil.hpp"
+#include "membra/measure/colormap.hpp"
+#include "membra/measure/stress.hpp"
+
+namespace membra {
+
+RunColors run_colors(const RunResult& r, const PictureOptions& opts) {
+  RunColors c;
+  const auto& mesh = r.prepared.membrane.sheet;
+  for (double k : r.curvature.density) c.curvature.push_back(k * 1e-6);  // 1/m^2 to 1/mm^2
+  for (double sv : vertex_stress(mesh.model, r.stress)) c.stress.push_back(sv * 1e-6);
+  std::tie(c.k_lo, c.k_hi) = symmetric_range(c.curvature, 1e-6);
+  if (opts.curvature_range.size() == 2)
+    c.k_lo = opts.curvature_range[0], c.k_hi = opts.curvature_range[1];
+  std::tie(c.s_lo, c.s_hi) = symmetric_range(c.stress, 1e-3);
+  if (opts.stress_range.size() == 2) c.s_lo = opts.stress_range[0], c.s_hi = opts.stress_range[1];
+  return c;
+}
+
+void stage_run_files(const Scene& scene, const RunResult& r, const PictureOptions& opts,
+                     OutputSet& out) {
+  const auto& mesh = r.prepared.membrane.sheet;
+  const auto& x = r.prepared.membrane.state.x;
+  out.add("final.obj", [&](std::ostream& os) { write_obj(os, x, mesh.triangles); });
+  const RunColors c = run_colors(r, opts);
+  const std::vector<Rgb> k_colors = colorize(c.curvature, c.k_lo, c.k_hi);
+  out.add("final.ply", [&](std::ostream& os) {
+    write_ply(os, x, mesh.triangles, k_colors,
+              {{"gaussian_curvature", c.curvature}, {"stress", c.stress}});
+  });
+  // The stencil at true scale (outlines traced every 0.25 mm).
+  if (const PatternPtr pattern = scene_pattern(scene)) {
+    const Box2 frame = scene_frame(scene);
+    const auto outlines = trace_outlines(*pattern, frame, 0.25e-3);
+    out.add("pattern.svg", [&](std::ostream& os) { write_svg(os, outlines, frame); });
+    out.add("pattern.dxf", [&](std::ostream& os) { write_dxf(os, outlines, frame); });
+  }
+}
+
+}  // namespace membra
