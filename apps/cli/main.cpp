@@ -85,77 +85,128 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   return kOk;
 }
 
+// Every subcommand's arguments, filled in by CLI11.
+struct Args {
+  std::string scene_file, out_dir;
+  std::vector<std::string> sets;
+  bool quiet = false;
+  membra::PictureOptions run_opts;
+  membra::cli::BenchArgs bench;
+  membra::cli::DesignArgs design;
+  membra::viewer::ViewArgs view;
+  bool script_help = false;
+};
+
+const char* const kSetHelp =
+    "Override a scene value before validation, e.g. --set simulation.steps=500";
+
+CLI::App* add_run(CLI::App& app, Args& a) {
+  auto* run = app.add_subcommand("run", "Run a scene and write its results");
+  run->add_option("scene", a.scene_file, "Scene file (JSON)")->required();
+  run->add_option("--out,-o", a.out_dir, "Output directory (default: out/<scene name>)");
+  run->add_option("--set", a.sets, kSetHelp)->type_name("PATH=VALUE");
+  run->add_option(
+         "--curvature-range", a.run_opts.curvature_range,
+         "Colour range of curvature.png and final.ply, 1/mm^2 (default: symmetric, automatic)")
+      ->expected(2)
+      ->allow_extra_args(false)
+      ->type_name("LO HI");
+  run->add_option("--stress-range", a.run_opts.stress_range,
+                  "Colour range of stress.png, MPa (default: symmetric, automatic)")
+      ->expected(2)
+      ->allow_extra_args(false)
+      ->type_name("LO HI");
+  run->add_flag("--quiet,-q", a.quiet, "No progress bar or summary");
+  return run;
+}
+
+CLI::App* add_validate(CLI::App& app, Args& a) {
+  auto* validate = app.add_subcommand("validate", "Check a scene without running it");
+  validate->add_option("scene", a.scene_file, "Scene file (JSON)")->required();
+  validate->add_option("--set", a.sets, kSetHelp)->type_name("PATH=VALUE");
+  validate->add_flag("--quiet,-q", a.quiet, "Print nothing when the scene is valid");
+  return validate;
+}
+
+CLI::App* add_bench(CLI::App& app, Args& a) {
+  auto* bench = app.add_subcommand(
+      "bench", "Run membra's solvers side by side on the benchmark problem P(n)");
+  bench->add_option("--sizes", a.bench.sizes, "Grid sizes n (n x n particles)")
+      ->delimiter(',')
+      ->check(CLI::Range(3, 4096));
+  bench->add_option("--solvers", a.bench.solvers, "static, dr_unit, newton, rk4")->delimiter(',');
+  bench->add_option("--budget", a.bench.budget, "Wall-time budget per run, s")
+      ->check(CLI::PositiveNumber);
+  bench->add_flag("--json", a.bench.json, "Machine-readable output on stdout");
+  bench->add_option("--json-out", a.bench.json_out, "Also write the JSON to this file");
+  bench->add_flag("--quiet,-q", a.bench.quiet, "No per-run log on stderr");
+  return bench;
+}
+
+CLI::App* add_design(CLI::App& app, Args& a) {
+  auto* design = app.add_subcommand("design", "Inverse design: a stencil for a wanted form");
+  design->require_subcommand(1);
+  auto* target =
+      design->add_subcommand("target", "Design a stencil whose released form fits a target");
+  target->add_option("file", a.design.file, "Design file (JSON)")->required();
+  target->add_option("--out,-o", a.design.out_dir, "Output directory (default: out/<name>)");
+  target->add_flag("--quiet,-q", a.design.quiet, "No progress or summary");
+  return design;
+}
+
+CLI::App* add_view(CLI::App& app, Args& a) {
+  auto* view = app.add_subcommand("view", "The interactive viewer (or a script driving it)");
+  view->add_option("scene", a.view.scene, "Scene file (JSON); default: a plain latex sheet");
+  view->add_option("--script", a.view.script,
+                   "Run the commands in FILE (one a line) instead of waiting for the mouse");
+  view->add_option("--set", a.view.sets, kSetHelp)->type_name("PATH=VALUE");
+  view->add_option("--size", a.view.size, "Window size in pixels")->expected(2)->type_name("W H");
+  view->add_flag("--script-help", a.script_help, "List the script commands");
+  return view;
+}
+
+// The chosen subcommand, carried out.
+struct Commands {
+  CLI::App *run, *validate, *bench, *design, *view;
+};
+
+int dispatch(const Commands& c, const Args& a) {
+  if (*c.run) {
+    for (const auto& [flag, range] : {std::pair{"--curvature-range", &a.run_opts.curvature_range},
+                                      std::pair{"--stress-range", &a.run_opts.stress_range}})
+      if (range->size() == 2 && !((*range)[0] < (*range)[1]))
+        throw membra::InputError(flag, "LO must be below HI");
+    return cmd_run(a.scene_file, a.sets, a.out_dir, a.quiet, a.run_opts);
+  }
+  if (*c.validate) return cmd_validate(a.scene_file, a.sets, a.quiet);
+  if (*c.design) return membra::cli::cmd_design(a.design);
+  if (*c.view) {
+    if (a.script_help) {
+      std::cout << "membra view --script FILE: one command a line ('#' comments)\n"
+                << membra::view_script_help();
+      return kOk;
+    }
+    return membra::viewer::run_view(a.view);
+  }
+  if (*c.bench) {
+    try {
+      return membra::cli::cmd_bench(a.bench);
+    } catch (const std::invalid_argument& e) {
+      throw membra::InputError("--solvers", e.what());
+    }
+  }
+  return kInternal;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"membra: form-finding for pre-stretched, resin-impregnated membranes"};
   app.set_version_flag("--version", std::string("membra ") + membra::kVersion);
   app.require_subcommand(1);
-
-  std::string scene_file, out_dir;
-  std::vector<std::string> sets;
-  bool quiet = false;
-  const char* set_help =
-      "Override a scene value before validation, e.g. --set simulation.steps=500";
-  auto* run = app.add_subcommand("run", "Run a scene and write its results");
-  run->add_option("scene", scene_file, "Scene file (JSON)")->required();
-  run->add_option("--out,-o", out_dir, "Output directory (default: out/<scene name>)");
-  run->add_option("--set", sets, set_help)->type_name("PATH=VALUE");
-  membra::PictureOptions run_opts;
-  run->add_option(
-         "--curvature-range", run_opts.curvature_range,
-         "Colour range of curvature.png and final.ply, 1/mm^2 (default: symmetric, automatic)")
-      ->expected(2)
-      ->allow_extra_args(false)
-      ->type_name("LO HI");
-  run->add_option("--stress-range", run_opts.stress_range,
-                  "Colour range of stress.png, MPa (default: symmetric, automatic)")
-      ->expected(2)
-      ->allow_extra_args(false)
-      ->type_name("LO HI");
-  run->add_flag("--quiet,-q", quiet, "No progress bar or summary");
-
-  auto* validate = app.add_subcommand("validate", "Check a scene without running it");
-  validate->add_option("scene", scene_file, "Scene file (JSON)")->required();
-  validate->add_option("--set", sets, set_help)->type_name("PATH=VALUE");
-  validate->add_flag("--quiet,-q", quiet, "Print nothing when the scene is valid");
-
-  membra::cli::BenchArgs bench_args;
-  auto* bench = app.add_subcommand(
-      "bench", "Run membra's solvers side by side on the benchmark problem P(n)");
-  bench->add_option("--sizes", bench_args.sizes, "Grid sizes n (n x n particles)")
-      ->delimiter(',')
-      ->check(CLI::Range(3, 4096));
-  bench->add_option("--solvers", bench_args.solvers, "static, dr_unit, newton, rk4")
-      ->delimiter(',');
-  bench->add_option("--budget", bench_args.budget, "Wall-time budget per run, s")
-      ->check(CLI::PositiveNumber);
-  bench->add_flag("--json", bench_args.json, "Machine-readable output on stdout");
-  bench->add_option("--json-out", bench_args.json_out, "Also write the JSON to this file");
-  bench->add_flag("--quiet,-q", bench_args.quiet, "No per-run log on stderr");
-
-  membra::cli::DesignArgs design_args;
-  auto* design = app.add_subcommand("design", "Inverse design: a stencil for a wanted form");
-  design->require_subcommand(1);
-  auto* design_target =
-      design->add_subcommand("target", "Design a stencil whose released form fits a target");
-  design_target->add_option("file", design_args.file, "Design file (JSON)")->required();
-  design_target->add_option("--out,-o", design_args.out_dir,
-                            "Output directory (default: out/<name>)");
-  design_target->add_flag("--quiet,-q", design_args.quiet, "No progress or summary");
-
-  membra::viewer::ViewArgs view_args;
-  auto* view = app.add_subcommand("view", "The interactive viewer (or a script driving it)");
-  view->add_option("scene", view_args.scene, "Scene file (JSON); default: a plain latex sheet");
-  view->add_option("--script", view_args.script,
-                   "Run the commands in FILE (one a line) instead of waiting for the mouse");
-  view->add_option("--set", view_args.sets, set_help)->type_name("PATH=VALUE");
-  view->add_option("--size", view_args.size, "Window size in pixels")
-      ->expected(2)
-      ->type_name("W H");
-  bool script_help = false;
-  view->add_flag("--script-help", script_help, "List the script commands");
-
+  Args a;
+  const Commands c{add_run(app, a), add_validate(app, a), add_bench(app, a), add_design(app, a),
+                   add_view(app, a)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -163,30 +214,7 @@ int main(int argc, char** argv) {
     return code == 0 ? kOk : kBadInput;
   }
   try {
-    if (*run) {
-      for (const auto& [flag, range] : {std::pair{"--curvature-range", &run_opts.curvature_range},
-                                        std::pair{"--stress-range", &run_opts.stress_range}})
-        if (range->size() == 2 && !((*range)[0] < (*range)[1]))
-          throw membra::InputError(flag, "LO must be below HI");
-      return cmd_run(scene_file, sets, out_dir, quiet, run_opts);
-    }
-    if (*validate) return cmd_validate(scene_file, sets, quiet);
-    if (*design) return membra::cli::cmd_design(design_args);
-    if (*view) {
-      if (script_help) {
-        std::cout << "membra view --script FILE: one command a line ('#' comments)\n"
-                  << membra::view_script_help();
-        return kOk;
-      }
-      return membra::viewer::run_view(view_args);
-    }
-    if (*bench) {
-      try {
-        return membra::cli::cmd_bench(bench_args);
-      } catch (const std::invalid_argument& e) {
-        throw membra::InputError("--solvers", e.what());
-      }
-    }
+    return dispatch(c, a);
   } catch (const membra::InputError& e) {
     std::cerr << "membra: error: " << e.what() << "\n";
     return kBadInput;
@@ -194,11 +222,10 @@ int main(int argc, char** argv) {
     std::cerr << "membra: error: " << e.what() << "\n";
     return kOutput;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "membra: error: " << scene_file << ": " << e.what() << "\n";
+    std::cerr << "membra: error: " << a.scene_file << ": " << e.what() << "\n";
     return kBadInput;
   } catch (const std::exception& e) {
     std::cerr << "membra: internal error: " << e.what() << "\n";
     return kInternal;
   }
-  return kInternal;
 }

@@ -27,6 +27,53 @@ Scene default_scene(const std::vector<std::string>& sets) {
   return parse_scene(j);
 }
 
+// The `drag` and `click` commands: a scripted left-button stroke, one frame per mouse step.
+void run_drag(const ScriptCommand& c, ViewerSession& session, ViewSettings& settings,
+              ViewerWindow& window) {
+  // The left button pressed at the start, moved in steps, released at the end: one frame
+  // each, through the same mouse code as a hand on the mouse.
+  const double x0 = c.number(0), y0 = c.number(1);
+  const double x1 = c.name == "drag" ? c.number(2) : x0, y1 = c.name == "drag" ? c.number(3) : y0;
+  constexpr int steps = 12;
+  Pointer p;
+  p.x = x0;
+  p.y = y0;
+  window.inject(p);  // hover first: no jump in the drag's first move
+  window.frame(session, settings, false, nullptr);
+  for (int k = 0; k <= steps; ++k) {
+    p.x = x0 + (x1 - x0) * k / steps;
+    p.y = y0 + (y1 - y0) * k / steps;
+    p.down[0] = true;
+    window.inject(p);
+    window.frame(session, settings, false, nullptr);
+  }
+  p.down[0] = false;
+  window.inject(p);
+  window.frame(session, settings, false, nullptr);
+  if (window.status().find("cannot") != std::string::npos)
+    std::cerr << c.where << ": " << window.status() << "\n";
+}
+
+// `screenshot`, `save` and `export`: a file written, its errors reported at the command.
+void run_file_command(const ScriptCommand& c, ViewerSession& session, ViewSettings& settings,
+                      ViewerWindow& window) {
+  try {
+    if (c.name == "screenshot") {
+      Image img;
+      window.frame(session, settings, false, &img);
+      write_png(c.words[0], img);
+    } else if (c.name == "save") {
+      save_session_scene(session, c.words[0]);
+    } else if (c.name == "export") {
+      export_session(session, c.words[0]);
+    }
+  } catch (const OutputError& e) {
+    throw InputError(c.where, e.what());
+  } catch (const RenderError& e) {
+    throw InputError(c.where, e.what());
+  }
+}
+
 // Runs a script: session commands act at once, `step N` draws N frames, window commands here.
 int run_script(const std::vector<ScriptCommand>& script, ViewerSession& session,
                ViewSettings& settings, ViewerWindow& window) {
@@ -66,46 +113,10 @@ int run_script(const std::vector<ScriptCommand>& script, ViewerSession& session,
       continue;
     }
     if (c.name == "drag" || c.name == "click") {
-      // The left button pressed at the start, moved in steps, released at the end: one frame
-      // each, through the same mouse code as a hand on the mouse.
-      const double x0 = c.number(0), y0 = c.number(1);
-      const double x1 = c.name == "drag" ? c.number(2) : x0,
-                   y1 = c.name == "drag" ? c.number(3) : y0;
-      constexpr int steps = 12;
-      Pointer p;
-      p.x = x0;
-      p.y = y0;
-      window.inject(p);  // hover first: no jump in the drag's first move
-      window.frame(session, settings, false, nullptr);
-      for (int k = 0; k <= steps; ++k) {
-        p.x = x0 + (x1 - x0) * k / steps;
-        p.y = y0 + (y1 - y0) * k / steps;
-        p.down[0] = true;
-        window.inject(p);
-        window.frame(session, settings, false, nullptr);
-      }
-      p.down[0] = false;
-      window.inject(p);
-      window.frame(session, settings, false, nullptr);
-      if (window.status().find("cannot") != std::string::npos)
-        std::cerr << c.where << ": " << window.status() << "\n";
+      run_drag(c, session, settings, window);
       continue;
     }
-    try {
-      if (c.name == "screenshot") {
-        Image img;
-        window.frame(session, settings, false, &img);
-        write_png(c.words[0], img);
-      } else if (c.name == "save") {
-        save_session_scene(session, c.words[0]);
-      } else if (c.name == "export") {
-        export_session(session, c.words[0]);
-      }
-    } catch (const OutputError& e) {
-      throw InputError(c.where, e.what());
-    } catch (const RenderError& e) {
-      throw InputError(c.where, e.what());
-    }
+    run_file_command(c, session, settings, window);
   }
   return 0;
 }

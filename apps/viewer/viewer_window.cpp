@@ -22,411 +22,234 @@
 #include "membra/view/flat_view.hpp"
 #include "membra/view/picking.hpp"
 #include "membra/view/session_files.hpp"
+#include "viewer_window_impl.hpp"
 
 namespace membra::viewer {
 namespace {
 
-constexpr int kPanelWidth = 330;  // pixels of the control panel on the left
-
-enum class Tool { orbit, paint, erase, cut, hole, pin };
-const char* kToolNames[] = {"orbit", "paint", "erase", "cut", "hole", "pin"};
-
 const std::array<Rgb, 4> kFamilyColors = {Rgb(0.15f, 0.15f, 0.15f), Rgb(0.45f, 0.45f, 0.7f),
                                           Rgb(0.6f, 0.4f, 0.2f), Rgb(0.8f, 0.1f, 0.6f)};
-const char* kFamilyNames[] = {"stretch", "shear", "flex", "added"};
 
 }  // namespace
 
-struct ViewerWindow::Impl {
-  GLFWwindow* window = nullptr;
-  std::unique_ptr<GlPainter> painter;
-  std::string status = "ready";
-  std::string scene_path = "session.json";
-  std::string export_path = "form.obj";
-  std::string screenshot_path = "screenshot.png";
-  bool screenshot_pending = false;  // the Screenshot button: capture this frame
-  Tool tool = Tool::orbit;
-  double hole_radius = 0.01;  // m
-  // Mouse drag state.
-  bool dragging = false;
-  int drag_button = -1;
-  double last_x = 0, last_y = 0;
-  std::optional<Vec2> cut_start, cut_end;  // frame coordinates of a cut being dragged
-  // Frame timing, for the panel's frames per second.
-  std::chrono::steady_clock::time_point last_frame = std::chrono::steady_clock::now();
-  double fps = 0.0;
-  std::optional<Stage> drawn_stage;  // the camera is refitted when the stage changes
-  std::optional<Pointer> injected;   // a scripted mouse for the next frame
+void ViewerWindow::Impl::sizes(int& w, int& h) const {
+  glfwGetFramebufferSize(window, &w, &h);
+}
 
-  int scene_x() const { return kPanelWidth; }
-  void sizes(int& w, int& h) const { glfwGetFramebufferSize(window, &w, &h); }
-  // The sheet is drawn in the left part of the scene area; the legend takes the rest.
-  static int mesh_width(int scene_width) { return std::max(1, scene_width * 4 / 5); }
+// Frame coordinates under the mouse at window pixel (px, py), if it is over the sheet.
+std::optional<Vec2> ViewerWindow::Impl::frame_point(const ViewerSession& s, const ViewSettings& v,
+                                                    double px, double py) const {
+  int w, h;
+  sizes(w, h);
+  const int sw = mesh_width(std::max(1, w - scene_x()));
+  if (px < scene_x()) return std::nullopt;
+  if (v.flat) return flat_view(s, sw, h).to_frame(px - scene_x(), py);
+  const Membrane& m = s.membrane();
+  const auto hit = pick(v.camera.ray(px - scene_x(), py, sw, h), m.state.x, m.sheet.triangles);
+  if (!hit) return std::nullopt;
+  return Vec2(hit->point.head<2>());
+}
 
-  // Frame coordinates under the mouse at window pixel (px, py), if it is over the sheet.
-  std::optional<Vec2> frame_point(const ViewerSession& s, const ViewSettings& v, double px,
-                                  double py) const {
-    int w, h;
-    sizes(w, h);
-    const int sw = mesh_width(std::max(1, w - scene_x()));
-    if (px < scene_x()) return std::nullopt;
-    if (v.flat) return flat_view(s, sw, h).to_frame(px - scene_x(), py);
-    const Membrane& m = s.membrane();
-    const auto hit = pick(v.camera.ray(px - scene_x(), py, sw, h), m.state.x, m.sheet.triangles);
-    if (!hit) return std::nullopt;
-    return Vec2(hit->point.head<2>());
+FlatView ViewerWindow::Impl::flat_view(const ViewerSession& s, int w, int h) {
+  FlatView f;
+  const Membrane& m = s.membrane();
+  f.box.extend(Vec2::Zero());
+  f.box.extend(Vec2(m.stretch.x() * m.sheet.grid.width(), m.stretch.y() * m.sheet.grid.height()));
+  for (Eigen::Index p = 0; p < m.state.x.cols(); ++p)
+    f.box.extend(Vec2(m.state.x.col(p).head<2>()));
+  f.width = w;
+  f.height = h;
+  return f;
+}
+
+void ViewerWindow::Impl::fit_camera(const ViewerSession& s, ViewSettings& v) const {
+  const Points& x = s.membrane().state.x;
+  if (x.cols() == 0) return;
+  const Vec3 c = 0.5 * (x.rowwise().minCoeff() + x.rowwise().maxCoeff());
+  double r = 1e-9;
+  for (Eigen::Index p = 0; p < x.cols(); ++p) r = std::max(r, (x.col(p) - c).norm());
+  v.camera.fit(c, r, 1.25);
+  v.camera_fitted = true;
+}
+
+void ViewerWindow::Impl::apply_tool(ViewerSession& s, const ViewSettings& v, const Vec2& at,
+                                    bool first) {
+  switch (tool) {
+    case Tool::paint:
+    case Tool::erase:
+      if (first) s.begin_edit();
+      report(s.paint(at, v.brush_radius, tool == Tool::erase), "painted");
+      break;
+    case Tool::hole:
+      if (first) report(s.hole(at, hole_radius), "hole punched");
+      break;
+    case Tool::pin:
+      if (first) report(s.toggle_pin(at), "pin toggled");
+      break;
+    default:
+      break;
   }
+}
 
-  static FlatView flat_view(const ViewerSession& s, int w, int h) {
-    FlatView f;
-    const Membrane& m = s.membrane();
-    f.box.extend(Vec2::Zero());
-    f.box.extend(Vec2(m.stretch.x() * m.sheet.grid.width(), m.stretch.y() * m.sheet.grid.height()));
-    for (Eigen::Index p = 0; p < m.state.x.cols(); ++p)
-      f.box.extend(Vec2(m.state.x.col(p).head<2>()));
-    f.width = w;
-    f.height = h;
-    return f;
-  }
+// The mouse as GLFW and ImGui see it, in framebuffer pixels.
+Pointer ViewerWindow::Impl::read_pointer() const {
+  const ImGuiIO& io = ImGui::GetIO();
+  Pointer p;
+  glfwGetCursorPos(window, &p.x, &p.y);
+  // Window coordinates to framebuffer pixels (equal unless the display scales).
+  int fw, fh, ww, wh;
+  glfwGetFramebufferSize(window, &fw, &fh);
+  glfwGetWindowSize(window, &ww, &wh);
+  p.x *= static_cast<double>(fw) / std::max(1, ww);
+  p.y *= static_cast<double>(fh) / std::max(1, wh);
+  p.down = {glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS,
+            glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS,
+            glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS};
+  p.wheel = io.MouseWheel;
+  p.shift = io.KeyShift;
+  p.over_panel = io.WantCaptureMouse;
+  return p;
+}
 
-  void fit_camera(const ViewerSession& s, ViewSettings& v) const {
-    const Points& x = s.membrane().state.x;
-    if (x.cols() == 0) return;
-    const Vec3 c = 0.5 * (x.rowwise().minCoeff() + x.rowwise().maxCoeff());
-    double r = 1e-9;
-    for (Eigen::Index p = 0; p < x.cols(); ++p) r = std::max(r, (x.col(p) - c).norm());
-    v.camera.fit(c, r, 1.25);
-    v.camera_fitted = true;
-  }
+void ViewerWindow::Impl::handle_mouse(ViewerSession& s, ViewSettings& v, const Pointer& ptr) {
+  const double mx = ptr.x, my = ptr.y;
+  const double dx = mx - last_x, dy = my - last_y;
+  last_x = mx;
+  last_y = my;
+  if (ptr.over_panel && !dragging) return;
+  if (!ptr.over_panel && ptr.wheel != 0.0 && !v.flat) v.camera.zoom(std::pow(1.1, ptr.wheel));
 
-  void report(const std::string& why, const std::string& done) {
-    status = why.empty() ? done : why;
-  }
-
-  void apply_tool(ViewerSession& s, const ViewSettings& v, const Vec2& at, bool first) {
-    switch (tool) {
-      case Tool::paint:
-      case Tool::erase:
-        if (first) s.begin_edit();
-        report(s.paint(at, v.brush_radius, tool == Tool::erase), "painted");
-        break;
-      case Tool::hole:
-        if (first) report(s.hole(at, hole_radius), "hole punched");
-        break;
-      case Tool::pin:
-        if (first) report(s.toggle_pin(at), "pin toggled");
-        break;
-      default:
-        break;
-    }
-  }
-
-  // The mouse as GLFW and ImGui see it, in framebuffer pixels.
-  Pointer read_pointer() const {
-    const ImGuiIO& io = ImGui::GetIO();
-    Pointer p;
-    glfwGetCursorPos(window, &p.x, &p.y);
-    // Window coordinates to framebuffer pixels (equal unless the display scales).
-    int fw, fh, ww, wh;
-    glfwGetFramebufferSize(window, &fw, &fh);
-    glfwGetWindowSize(window, &ww, &wh);
-    p.x *= static_cast<double>(fw) / std::max(1, ww);
-    p.y *= static_cast<double>(fh) / std::max(1, wh);
-    p.down = {glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS,
-              glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS,
-              glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS};
-    p.wheel = io.MouseWheel;
-    p.shift = io.KeyShift;
-    p.over_panel = io.WantCaptureMouse;
-    return p;
-  }
-
-  void handle_mouse(ViewerSession& s, ViewSettings& v, const Pointer& ptr) {
-    const double mx = ptr.x, my = ptr.y;
-    const double dx = mx - last_x, dy = my - last_y;
-    last_x = mx;
-    last_y = my;
-    if (ptr.over_panel && !dragging) return;
-    if (!ptr.over_panel && ptr.wheel != 0.0 && !v.flat) v.camera.zoom(std::pow(1.1, ptr.wheel));
-
-    for (int b : {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT, GLFW_MOUSE_BUTTON_MIDDLE}) {
-      const bool down = ptr.down[static_cast<size_t>(b)];
-      if (down && !dragging && mx >= scene_x()) {
-        dragging = true;
-        drag_button = b;
-        if (b == GLFW_MOUSE_BUTTON_LEFT && tool != Tool::orbit) {
-          if (const auto at = frame_point(s, v, mx, my)) {
-            if (tool == Tool::cut) cut_start = cut_end = at;
-            apply_tool(s, v, *at, true);
-          }
+  for (int b : {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT, GLFW_MOUSE_BUTTON_MIDDLE}) {
+    const bool down = ptr.down[static_cast<size_t>(b)];
+    if (down && !dragging && mx >= scene_x()) {
+      dragging = true;
+      drag_button = b;
+      if (b == GLFW_MOUSE_BUTTON_LEFT && tool != Tool::orbit) {
+        if (const auto at = frame_point(s, v, mx, my)) {
+          if (tool == Tool::cut) cut_start = cut_end = at;
+          apply_tool(s, v, *at, true);
         }
-      } else if (!down && dragging && drag_button == b) {
-        dragging = false;
-        if (tool == Tool::paint || tool == Tool::erase) s.end_edit();
-        if (tool == Tool::cut && cut_start && cut_end && b == GLFW_MOUSE_BUTTON_LEFT)
-          report(s.cut(*cut_start, *cut_end), "cut");
-        cut_start.reset();
-        cut_end.reset();
       }
+    } else if (!down && dragging && drag_button == b) {
+      dragging = false;
+      if (tool == Tool::paint || tool == Tool::erase) s.end_edit();
+      if (tool == Tool::cut && cut_start && cut_end && b == GLFW_MOUSE_BUTTON_LEFT)
+        report(s.cut(*cut_start, *cut_end), "cut");
+      cut_start.reset();
+      cut_end.reset();
     }
-    if (!dragging) return;
-    if (drag_button == GLFW_MOUSE_BUTTON_LEFT && tool != Tool::orbit) {
-      if (const auto at = frame_point(s, v, mx, my)) {
-        if (tool == Tool::cut) cut_end = at;
-        if (tool == Tool::paint || tool == Tool::erase) apply_tool(s, v, *at, false);
-      }
-      return;
-    }
-    int w, h;
-    sizes(w, h);
-    if (v.flat) return;
-    if (drag_button == GLFW_MOUSE_BUTTON_MIDDLE ||
-        (drag_button == GLFW_MOUSE_BUTTON_RIGHT && ptr.shift))
-      v.camera.pan(dx, dy, h);
-    else
-      v.camera.orbit(-0.4 * dx, 0.4 * dy);
   }
-
-  void handle_keys(ViewerSession& s, ViewSettings& v) {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureKeyboard) return;
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) {
-      if (io.KeyShift)
-        report(s.redo() ? "" : "nothing to redo", "redone");
-      else
-        report(s.undo() ? "" : "nothing to undo", "undone");
+  if (!dragging) return;
+  if (drag_button == GLFW_MOUSE_BUTTON_LEFT && tool != Tool::orbit) {
+    if (const auto at = frame_point(s, v, mx, my)) {
+      if (tool == Tool::cut) cut_end = at;
+      if (tool == Tool::paint || tool == Tool::erase) apply_tool(s, v, *at, false);
     }
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y))
+    return;
+  }
+  int w, h;
+  sizes(w, h);
+  if (v.flat) return;
+  if (drag_button == GLFW_MOUSE_BUTTON_MIDDLE ||
+      (drag_button == GLFW_MOUSE_BUTTON_RIGHT && ptr.shift))
+    v.camera.pan(dx, dy, h);
+  else
+    v.camera.orbit(-0.4 * dx, 0.4 * dy);
+}
+
+void ViewerWindow::Impl::handle_keys(ViewerSession& s, ViewSettings& v) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureKeyboard) return;
+  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) {
+    if (io.KeyShift)
       report(s.redo() ? "" : "nothing to redo", "redone");
-    if (ImGui::IsKeyPressed(GLFW_KEY_SPACE)) v.playing = !v.playing;
-    if (ImGui::IsKeyPressed(GLFW_KEY_R) && !io.KeyCtrl) v.camera_fitted = false;
-  }
-
-  void panel(ViewerSession& s, ViewSettings& v) {
-    ImGui::SetNextWindowPos(ImVec2(0, 0));
-    int w, h;
-    glfwGetWindowSize(window, &w, &h);
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, static_cast<float>(h)));
-    ImGui::Begin("membra", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::Text("%s", s.scene().name.c_str());
-    ImGui::Text("stage: %s   %.0f fps", stage_name(s.stage()), fps);
-    if (s.settled())
-      ImGui::Text("settled");
     else
-      ImGui::Text("moving: residual %.2e", s.last_slice().residual_relative);
-
-    if (ImGui::CollapsingHeader("Process", ImGuiTreeNodeFlags_DefaultOpen)) {
-      if (ImGui::Button("Stretch")) report(s.stretch(), "stretched");
-      ImGui::SameLine();
-      if (ImGui::Button("Impregnate")) report(s.impregnate(), "impregnated");
-      ImGui::SameLine();
-      if (ImGui::Button("Release")) report(s.release(), "releasing");
-      if (ImGui::Button("Play scene")) {
-        s.play_scene_protocol();
-        status = "playing the scene's protocol";
-      }
-      ImGui::SameLine();
-      if (ImGui::Button("Reset")) {
-        s.reset();
-        v.camera_fitted = false;
-        status = "reset";
-      }
-      if (ImGui::Button(v.playing ? "Pause" : "Play")) v.playing = !v.playing;
-      ImGui::SameLine();
-      if (ImGui::Button("Step")) s.advance(v.iterations_per_frame);
-      int mode = s.mode() == LiveMode::relax ? 0 : 1;
-      ImGui::SameLine();
-      if (ImGui::RadioButton("relax", &mode, 0)) s.set_mode(LiveMode::relax);
-      ImGui::SameLine();
-      if (ImGui::RadioButton("dynamics", &mode, 1)) s.set_mode(LiveMode::dynamics);
-    }
-    if (ImGui::CollapsingHeader("K, G, T, D", ImGuiTreeNodeFlags_DefaultOpen)) {
-      LiveParameters p = s.parameters();
-      float k = static_cast<float>(p.K / units::N_per_mm), g = static_cast<float>(p.G),
-            t = static_cast<float>(p.T), d = static_cast<float>(p.D),
-            lx = static_cast<float>(p.lambda.x()), ly = static_cast<float>(p.lambda.y());
-      bool changed =
-          ImGui::SliderFloat("K N/mm", &k, 0.01f, 10.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
-      changed |= ImGui::SliderFloat("G m/s2", &g, 0.0f, 20.0f, "%.2f");
-      changed |= ImGui::SliderFloat("T s", &t, 1e-6f, 1e-3f, "%.1e", ImGuiSliderFlags_Logarithmic);
-      changed |= ImGui::SliderFloat("D 1/s", &d, 0.0f, 200.0f, "%.1f");
-      changed |= ImGui::SliderFloat("lambda x", &lx, 0.5f, 3.0f, "%.2f");
-      changed |= ImGui::SliderFloat("lambda y", &ly, 0.5f, 3.0f, "%.2f");
-      if (changed) {
-        p.K = k * units::N_per_mm;
-        p.G = g;
-        p.T = t;
-        p.D = d;
-        p.lambda = Vec2(lx, ly);
-        report(s.set_parameters(p), status);
-      }
-    }
-    if (ImGui::CollapsingHeader("Tools", ImGuiTreeNodeFlags_DefaultOpen)) {
-      int t = static_cast<int>(tool);
-      for (int i = 0; i < 6; ++i) {
-        if (i % 3) ImGui::SameLine();
-        ImGui::RadioButton(kToolNames[i], &t, i);
-      }
-      tool = static_cast<Tool>(t);
-      float brush = static_cast<float>(v.brush_radius / units::mm);
-      if (ImGui::SliderFloat("brush mm", &brush, 1.0f, 50.0f, "%.1f"))
-        v.brush_radius = brush * units::mm;
-      float hole = static_cast<float>(hole_radius / units::mm);
-      if (ImGui::SliderFloat("hole mm", &hole, 1.0f, 50.0f, "%.1f")) hole_radius = hole * units::mm;
-      if (ImGui::Button("Undo")) report(s.undo() ? "" : "nothing to undo", "undone");
-      ImGui::SameLine();
-      if (ImGui::Button("Redo")) report(s.redo() ? "" : "nothing to redo", "redone");
-    }
-    if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
-      int c = static_cast<int>(v.color);
-      ImGui::RadioButton("stress", &c, 0);
-      ImGui::SameLine();
-      ImGui::RadioButton("curvature", &c, 1);
-      ImGui::SameLine();
-      ImGui::RadioButton("pattern", &c, 2);
-      if (c != static_cast<int>(v.color)) {
-        v.color = static_cast<ColorMode>(c);
-        v.range.reset();
-      }
-      bool manual = v.range.has_value();
-      if (ImGui::Checkbox("manual range", &manual)) {
-        if (manual) {
-          const ColorField f = color_field(s, v.color);
-          v.range = std::pair{f.lo, f.hi};
-        } else {
-          v.range.reset();
-        }
-      }
-      if (v.range) {
-        float lo = static_cast<float>(v.range->first), hi = static_cast<float>(v.range->second);
-        const float span = std::max(std::abs(lo), std::abs(hi)) * 2.0f + 1e-30f;
-        ImGui::DragFloat("lo", &lo, span / 200, 0, 0, "%.3g");
-        ImGui::DragFloat("hi", &hi, span / 200, 0, 0, "%.3g");
-        if (lo < hi) v.range = std::pair{lo, hi};
-      }
-      int view = v.flat ? 1 : 0;
-      ImGui::RadioButton("3-D", &view, 0);
-      ImGui::SameLine();
-      ImGui::RadioButton("2-D", &view, 1);
-      v.flat = view == 1;
-      ImGui::SameLine();
-      if (ImGui::Button("Fit camera")) v.camera_fitted = false;
-      ImGui::Checkbox("surface", &v.show_surface);
-      ImGui::SameLine();
-      ImGui::Checkbox("particles", &v.show_particles);
-      for (int f = 0; f < 4; ++f) {
-        if (f) ImGui::SameLine();
-        ImGui::Checkbox(kFamilyNames[f], &v.show_springs[static_cast<size_t>(f)]);
-      }
-    }
-    if (ImGui::CollapsingHeader("Files", ImGuiTreeNodeFlags_DefaultOpen)) {
-      char buf[512];
-      std::snprintf(buf, sizeof buf, "%s", scene_path.c_str());
-      if (ImGui::InputText("scene", buf, sizeof buf)) scene_path = buf;
-      if (ImGui::Button("Save scene"))
-        guarded([&] {
-          save_session_scene(s, scene_path);
-          status = "saved " + scene_path;
-        });
-      ImGui::SameLine();
-      if (ImGui::Button("Load scene"))
-        guarded([&] {
-          s = ViewerSession(load_scene(scene_path));
-          v.camera_fitted = false;
-          status = "loaded " + scene_path;
-        });
-      std::snprintf(buf, sizeof buf, "%s", export_path.c_str());
-      if (ImGui::InputText("export", buf, sizeof buf)) export_path = buf;
-      if (ImGui::Button("Export (.obj .ply .svg .dxf)"))
-        guarded([&] {
-          export_session(s, export_path);
-          status = "wrote " + export_path;
-        });
-      std::snprintf(buf, sizeof buf, "%s", screenshot_path.c_str());
-      if (ImGui::InputText("png", buf, sizeof buf)) screenshot_path = buf;
-      if (ImGui::Button("Screenshot")) screenshot_pending = true;
-    }
-    ImGui::Separator();
-    ImGui::TextWrapped("%s", status.c_str());
-    ImGui::End();
+      report(s.undo() ? "" : "nothing to undo", "undone");
   }
+  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y))
+    report(s.redo() ? "" : "nothing to redo", "redone");
+  if (ImGui::IsKeyPressed(GLFW_KEY_SPACE)) v.playing = !v.playing;
+  if (ImGui::IsKeyPressed(GLFW_KEY_R) && !io.KeyCtrl) v.camera_fitted = false;
+}
 
-  template <class F>
-  void guarded(F&& f) {
-    try {
-      f();
-    } catch (const std::exception& e) {
-      status = e.what();
-    }
+void ViewerWindow::Impl::draw_scene(const ViewerSession& s, ViewSettings& v) {
+  int w, h;
+  sizes(w, h);
+  const int legend_w = std::max(1, w - scene_x());
+  const int sw = mesh_width(legend_w);
+  glViewport(scene_x(), 0, sw, h);
+  const Membrane& m = s.membrane();
+  const Points& x = m.state.x;
+  // A new stage (stretched, reset, loaded) changes the sheet's size: look at all of it.
+  if (!drawn_stage || *drawn_stage != s.stage()) {
+    if (s.stage() != Stage::released && s.stage() != Stage::impregnated) v.camera_fitted = false;
+    drawn_stage = s.stage();
   }
+  if (!v.camera_fitted) fit_camera(s, v);
+  Eigen::Matrix4f vp;
+  Eigen::Matrix3f rot;
+  if (v.flat) {
+    vp = flat_view(s, sw, h).view_projection().cast<float>();
+    rot = Eigen::Matrix3f::Identity();
+  } else {
+    vp = v.camera.view_projection(static_cast<double>(sw) / h).cast<float>();
+    rot = v.camera.rotation().cast<float>();
+  }
+  const ColorField field = color_field(s, v.color);
+  if (v.show_surface) {
+    if (!v.flat) glEnable(GL_DEPTH_TEST);
+    painter->mesh(x, m.sheet.triangles, field_colors(field, v.range), vp, rot);
+    glDisable(GL_DEPTH_TEST);
+  }
+  draw_springs_and_particles(m, v, vp);
+  draw_frame_and_cut(m, v, vp);
+  Legend legend{field.title, field.unit, field.lo, field.hi};
+  if (v.range) std::tie(legend.lo, legend.hi) = *v.range;
+  glViewport(scene_x(), 0, legend_w, h);
+  painter->legend(legend, legend_w, h);
+  glViewport(0, 0, w, h);
+}
 
-  void draw_scene(const ViewerSession& s, ViewSettings& v) {
-    int w, h;
-    sizes(w, h);
-    const int legend_w = std::max(1, w - scene_x());
-    const int sw = mesh_width(legend_w);
-    glViewport(scene_x(), 0, sw, h);
-    const Membrane& m = s.membrane();
-    const Points& x = m.state.x;
-    // A new stage (stretched, reset, loaded) changes the sheet's size: look at all of it.
-    if (!drawn_stage || *drawn_stage != s.stage()) {
-      if (s.stage() != Stage::released && s.stage() != Stage::impregnated) v.camera_fitted = false;
-      drawn_stage = s.stage();
-    }
-    if (!v.camera_fitted) fit_camera(s, v);
-    Eigen::Matrix4f vp;
-    Eigen::Matrix3f rot;
-    if (v.flat) {
-      vp = flat_view(s, sw, h).view_projection().cast<float>();
-      rot = Eigen::Matrix3f::Identity();
-    } else {
-      vp = v.camera.view_projection(static_cast<double>(sw) / h).cast<float>();
-      rot = v.camera.rotation().cast<float>();
-    }
-    const ColorField field = color_field(s, v.color);
-    if (v.show_surface) {
-      if (!v.flat) glEnable(GL_DEPTH_TEST);
-      painter->mesh(x, m.sheet.triangles, field_colors(field, v.range), vp, rot);
-      glDisable(GL_DEPTH_TEST);
-    }
-    const Springs& sp = m.sheet.model.springs;
-    for (size_t f = 0; f < 4; ++f) {
-      if (!v.show_springs[f]) continue;
-      std::vector<Vec3> ends;
-      for (int i = 0; i < sp.size(); ++i)
-        if (static_cast<size_t>(sp.family[i]) == f) {
-          ends.push_back(x.col(sp.a[i]));
-          ends.push_back(x.col(sp.b[i]));
-        }
-      painter->lines(ends, kFamilyColors[f], vp);
-    }
-    std::vector<Vec3> pinned, all;
-    for (int p = 0; p < m.sheet.model.num_particles(); ++p) {
-      if (m.sheet.model.pinned(p)) pinned.push_back(x.col(p));
-      if (v.show_particles) all.push_back(x.col(p));
-    }
-    painter->points(all, Rgb(0.1f, 0.1f, 0.1f), 3.0f, vp);
-    painter->points(pinned, Rgb(0.0f, 0.0f, 0.0f), 5.0f, vp);
-    if (v.flat) {
-      // The frame: the stretched sheet's outline.
-      const double fw = m.stretch.x() * m.sheet.grid.width(),
-                   fh = m.stretch.y() * m.sheet.grid.height();
-      painter->lines({Vec3(0, 0, 0), Vec3(fw, 0, 0), Vec3(fw, 0, 0), Vec3(fw, fh, 0),
-                      Vec3(fw, fh, 0), Vec3(0, fh, 0), Vec3(0, fh, 0), Vec3(0, 0, 0)},
-                     Rgb(0.85f, 0.0f, 0.0f), vp);
-    }
-    if (cut_start && cut_end)
-      painter->lines(
-          {Vec3(cut_start->x(), cut_start->y(), 0.0), Vec3(cut_end->x(), cut_end->y(), 0.0)},
-          Rgb(0.0f, 0.0f, 0.0f), vp);
-    Legend legend{field.title, field.unit, field.lo, field.hi};
-    if (v.range) std::tie(legend.lo, legend.hi) = *v.range;
-    glViewport(scene_x(), 0, legend_w, h);
-    painter->legend(legend, legend_w, h);
-    glViewport(0, 0, w, h);
+// The springs of the shown families, the pinned particles and (when shown) all particles.
+void ViewerWindow::Impl::draw_springs_and_particles(const Membrane& m, const ViewSettings& v,
+                                                    const Eigen::Matrix4f& vp) {
+  const Points& x = m.state.x;
+  const Springs& sp = m.sheet.model.springs;
+  for (size_t f = 0; f < 4; ++f) {
+    if (!v.show_springs[f]) continue;
+    std::vector<Vec3> ends;
+    for (int i = 0; i < sp.size(); ++i)
+      if (static_cast<size_t>(sp.family[i]) == f) {
+        ends.push_back(x.col(sp.a[i]));
+        ends.push_back(x.col(sp.b[i]));
+      }
+    painter->lines(ends, kFamilyColors[f], vp);
   }
-};
+  std::vector<Vec3> pinned, all;
+  for (int p = 0; p < m.sheet.model.num_particles(); ++p) {
+    if (m.sheet.model.pinned(p)) pinned.push_back(x.col(p));
+    if (v.show_particles) all.push_back(x.col(p));
+  }
+  painter->points(all, Rgb(0.1f, 0.1f, 0.1f), 3.0f, vp);
+  painter->points(pinned, Rgb(0.0f, 0.0f, 0.0f), 5.0f, vp);
+}
+
+// The frame's outline in the 2-D view and the cut being dragged.
+void ViewerWindow::Impl::draw_frame_and_cut(const Membrane& m, const ViewSettings& v,
+                                            const Eigen::Matrix4f& vp) {
+  if (v.flat) {
+    // The frame: the stretched sheet's outline.
+    const double fw = m.stretch.x() * m.sheet.grid.width(),
+                 fh = m.stretch.y() * m.sheet.grid.height();
+    painter->lines({Vec3(0, 0, 0), Vec3(fw, 0, 0), Vec3(fw, 0, 0), Vec3(fw, fh, 0), Vec3(fw, fh, 0),
+                    Vec3(0, fh, 0), Vec3(0, fh, 0), Vec3(0, 0, 0)},
+                   Rgb(0.85f, 0.0f, 0.0f), vp);
+  }
+  if (cut_start && cut_end)
+    painter->lines(
+        {Vec3(cut_start->x(), cut_start->y(), 0.0), Vec3(cut_end->x(), cut_end->y(), 0.0)},
+        Rgb(0.0f, 0.0f, 0.0f), vp);
+}
 
 ViewerWindow::ViewerWindow(int width, int height, bool visible) : impl_(std::make_unique<Impl>()) {
   if (!glfwInit()) throw RenderError("cannot open a window: no display (run under xvfb-run?)");

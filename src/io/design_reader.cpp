@@ -102,6 +102,53 @@ json base_scene(const DesignSpec& spec, const json& materials) {
   return scene;
 }
 
+// /frame: its size and the pre-stretch.
+void read_frame(const JsonObject& top, DesignSpec& s) {
+  if (!top.has("frame")) return;
+  const JsonObject f = top.object("frame", {"size", "lambda"});
+  s.frame = f.number("size", 200.0, Bounds::positive()) * units::mm;
+  if (f.has("lambda")) {
+    const auto l = f.numbers("lambda", 2, Bounds{1.0, 10.0, false});
+    s.lambda = Vec2(l[0], l[1]);
+    if (!(s.lambda.prod() > 1.0))
+      throw InputError(f.pointer("lambda"),
+                       "at least one direction must be stretched (lambda > 1): without "
+                       "pre-stretch resin changes nothing");
+  }
+}
+
+// /resin: the material, its face, the stencil's cell and minimum feature.
+void read_resin(const JsonObject& top, DesignSpec& s) {
+  if (!top.has("resin")) return;
+  const JsonObject o =
+      top.object("resin", {"material", "min_feature", "cell", "resin_side", "bilayer"});
+  s.resin = o.string("material", s.resin);
+  s.resin_side = o.string("resin_side", "top", {"top", "bottom"});
+  s.bilayer = o.boolean("bilayer", false);
+  s.layout.min_feature = o.number("min_feature", 4.0, Bounds::positive()) * units::mm;
+  s.layout.cell = o.number("cell", 20.0, Bounds::positive()) * units::mm;
+  if (s.layout.cell < 2.0 * s.layout.min_feature)
+    throw InputError(o.pointer("cell"),
+                     "the cell must be at least twice min_feature (a piece and a gap)");
+  if (s.layout.cell > 0.5 * s.frame)
+    throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
+}
+
+// /design: the search's budget and the simulations' solver.
+void read_design_settings(const JsonObject& top, DesignSpec& s) {
+  if (!top.has("design")) return;
+  const JsonObject o =
+      top.object("design", {"evaluations", "budget", "solver", "tolerance", "increments"});
+  s.evaluations = static_cast<int>(o.integer("evaluations", s.evaluations, 1, 10000));
+  s.budget = o.number("budget", s.budget, Bounds::positive());
+  std::vector<std::string_view> equilibrium;
+  for (const SolverInfo& info : solver_table())
+    if (info.equilibrium && info.in_scenes) equilibrium.push_back(info.name);
+  s.solver = *solver_from_name(o.string("solver", std::string(solver_name(s.solver)), equilibrium));
+  s.tolerance = o.number("tolerance", s.tolerance, Bounds{0.0, 1.0, true});
+  s.increments = static_cast<int>(o.integer("increments", s.increments, 1, 1000));
+}
+
 }  // namespace
 
 DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
@@ -110,50 +157,14 @@ DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
   s.name = top.string("name", "design");
   if (!top.has("target")) throw InputError("/target", "a design needs a target surface");
   parse_target(top.at("target"), "/target", base_dir, s.target);
-  if (top.has("frame")) {
-    const JsonObject f = top.object("frame", {"size", "lambda"});
-    s.frame = f.number("size", 200.0, Bounds::positive()) * units::mm;
-    if (f.has("lambda")) {
-      const auto l = f.numbers("lambda", 2, Bounds{1.0, 10.0, false});
-      s.lambda = Vec2(l[0], l[1]);
-      if (!(s.lambda.prod() > 1.0))
-        throw InputError(f.pointer("lambda"),
-                         "at least one direction must be stretched (lambda > 1): without "
-                         "pre-stretch resin changes nothing");
-    }
-  }
+  read_frame(top, s);
   if (top.has("sheet")) {
     const JsonObject o = top.object("sheet", {"resolution", "material"});
     s.resolution = static_cast<int>(o.integer("resolution", s.resolution, 5, 201));
     s.material = o.string("material", s.material);
   }
-  if (top.has("resin")) {
-    const JsonObject o =
-        top.object("resin", {"material", "min_feature", "cell", "resin_side", "bilayer"});
-    s.resin = o.string("material", s.resin);
-    s.resin_side = o.string("resin_side", "top", {"top", "bottom"});
-    s.bilayer = o.boolean("bilayer", false);
-    s.layout.min_feature = o.number("min_feature", 4.0, Bounds::positive()) * units::mm;
-    s.layout.cell = o.number("cell", 20.0, Bounds::positive()) * units::mm;
-    if (s.layout.cell < 2.0 * s.layout.min_feature)
-      throw InputError(o.pointer("cell"),
-                       "the cell must be at least twice min_feature (a piece and a gap)");
-    if (s.layout.cell > 0.5 * s.frame)
-      throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
-  }
-  if (top.has("design")) {
-    const JsonObject o =
-        top.object("design", {"evaluations", "budget", "solver", "tolerance", "increments"});
-    s.evaluations = static_cast<int>(o.integer("evaluations", s.evaluations, 1, 10000));
-    s.budget = o.number("budget", s.budget, Bounds::positive());
-    std::vector<std::string_view> equilibrium;
-    for (const SolverInfo& info : solver_table())
-      if (info.equilibrium && info.in_scenes) equilibrium.push_back(info.name);
-    s.solver =
-        *solver_from_name(o.string("solver", std::string(solver_name(s.solver)), equilibrium));
-    s.tolerance = o.number("tolerance", s.tolerance, Bounds{0.0, 1.0, true});
-    s.increments = static_cast<int>(o.integer("increments", s.increments, 1, 1000));
-  }
+  read_resin(top, s);
+  read_design_settings(top, s);
   if (s.target.kind != "obj" && s.target.size > s.frame)
     throw InputError("/target",
                      "the target is wider than the frame: the released sheet is "

@@ -6,17 +6,20 @@
 #include "membra/version.hpp"
 
 namespace membra {
-
 namespace {
-nlohmann::json mm3(const Vec3& v) {
+
+using nlohmann::json;
+
+json mm3(const Vec3& v) {
   return {v.x() / units::mm, v.y() / units::mm, v.z() / units::mm};
 }
-}  // namespace
 
-nlohmann::json make_report(const Scene& scene, const RunResult& r) {
+const double per_mm2 = units::mm * units::mm;  // 1/m^2 to 1/mm^2
+
+// What the solves did, the model's size, and the stiffnesses.
+void report_run(const Scene& scene, const RunResult& r, json& j) {
   const SolveReport& s = r.solve;
   const Model& m = r.prepared.membrane.sheet.model;
-  nlohmann::json j;
   j["membra_version"] = kVersion;
   j["scene"] = scene.name;
   j["solver"] = std::string(solver_name(scene.simulation.solver));
@@ -34,6 +37,13 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
   j["springs"] = m.springs.size();
   j["triangles"] = r.prepared.membrane.sheet.triangles.size();
   j["pinned"] = r.prepared.pinned;
+  j["stiffness"] = {{"stretch", r.prepared.membrane.sheet.stiffness.stretch / units::N_per_mm},
+                    {"shear", r.prepared.membrane.sheet.stiffness.shear / units::N_per_mm},
+                    {"flex", r.prepared.membrane.sheet.stiffness.flex / units::N_per_mm}};
+}
+
+// What each step did.
+void report_steps(const RunResult& r, json& j) {
   j["steps"] = nlohmann::json::array();
   for (const StepReport& step : r.steps) {
     nlohmann::json js = {{"step", step.name},
@@ -50,75 +60,83 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
     }
     j["steps"].push_back(js);
   }
-  j["stiffness"] = {{"stretch", r.prepared.membrane.sheet.stiffness.stretch / units::N_per_mm},
-                    {"shear", r.prepared.membrane.sheet.stiffness.shear / units::N_per_mm},
-                    {"flex", r.prepared.membrane.sheet.stiffness.flex / units::N_per_mm}};
-  if (!s.diverged) {
-    j["energy"] = r.elastic_energy + r.bending_energy + r.gravity_energy;
-    j["energy_parts"] = {{"elastic", r.elastic_energy},
-                         {"bending", r.bending_energy},
-                         {"gravity", r.gravity_energy},
-                         {"kinetic", r.kinetic_energy}};
-    j["shape"] = {{"height", r.shape.height / units::mm},
-                  {"z_range", r.shape.z_range / units::mm},
-                  {"global_height", r.shape.global_height / units::mm},
-                  {"fold_rms", r.shape.fold_rms / units::mm},
-                  {"fold_max", r.shape.fold_max / units::mm},
-                  {"bbox_min", mm3(r.shape.bbox_min)},
-                  {"bbox_max", mm3(r.shape.bbox_max)},
-                  {"form", r.form}};
-    const double per_mm2 = units::mm * units::mm;  // 1/m^2 to 1/mm^2
-    j["curvature"] = {{"total", r.curvature.total},
-                      {"positive", r.curvature.positive},
-                      {"negative", r.curvature.negative},
-                      {"boundary", r.curvature.boundary},
-                      {"min_density", r.curvature.min_density * per_mm2},
-                      {"max_density", r.curvature.max_density * per_mm2},
-                      {"classification", r.form}};
-    j["stress"] = {{"min", r.stress.min_stress / units::MPa},
-                   {"max", r.stress.max_stress / units::MPa}};
-    j["strain"] = {{"min", r.stress.min_strain}, {"max", r.stress.max_strain}};
-    j["force"] = {{"min", r.stress.min_force}, {"max", r.stress.max_force}};
-    if (r.curvature_map) {
-      const CurvatureMapResult& cm = *r.curvature_map;
-      j["curvature_map"] = {{"step", cm.step},
-                            {"reachable", cm.reached >= 1.0},
-                            {"reached", cm.reached},
-                            {"message", cm.message},
-                            {"correlation", cm.match.correlation},
-                            {"rms_error", cm.match.rms_error * per_mm2},
-                            {"relative_rms_error", cm.match.relative_rms_error},
-                            {"mean_target", cm.match.mean_target * per_mm2},
-                            {"mean_measured", cm.match.mean_measured * per_mm2},
-                            {"interior_particles", cm.match.interior},
-                            {"margin", cm.margin / units::mm}};
+}
+
+// Energies, shape, curvature, stress of the end state.
+void report_form(const RunResult& r, json& j) {
+  j["energy"] = r.elastic_energy + r.bending_energy + r.gravity_energy;
+  j["energy_parts"] = {{"elastic", r.elastic_energy},
+                       {"bending", r.bending_energy},
+                       {"gravity", r.gravity_energy},
+                       {"kinetic", r.kinetic_energy}};
+  j["shape"] = {{"height", r.shape.height / units::mm},
+                {"z_range", r.shape.z_range / units::mm},
+                {"global_height", r.shape.global_height / units::mm},
+                {"fold_rms", r.shape.fold_rms / units::mm},
+                {"fold_max", r.shape.fold_max / units::mm},
+                {"bbox_min", mm3(r.shape.bbox_min)},
+                {"bbox_max", mm3(r.shape.bbox_max)},
+                {"form", r.form}};
+  j["curvature"] = {{"total", r.curvature.total},
+                    {"positive", r.curvature.positive},
+                    {"negative", r.curvature.negative},
+                    {"boundary", r.curvature.boundary},
+                    {"min_density", r.curvature.min_density * per_mm2},
+                    {"max_density", r.curvature.max_density * per_mm2},
+                    {"classification", r.form}};
+  j["stress"] = {{"min", r.stress.min_stress / units::MPa},
+                 {"max", r.stress.max_stress / units::MPa}};
+  j["strain"] = {{"min", r.stress.min_strain}, {"max", r.stress.max_strain}};
+  j["force"] = {{"min", r.stress.min_force}, {"max", r.stress.max_force}};
+}
+
+void report_curvature_map(const CurvatureMapResult& cm, json& j) {
+  j["curvature_map"] = {{"step", cm.step},
+                        {"reachable", cm.reached >= 1.0},
+                        {"reached", cm.reached},
+                        {"message", cm.message},
+                        {"correlation", cm.match.correlation},
+                        {"rms_error", cm.match.rms_error * per_mm2},
+                        {"relative_rms_error", cm.match.relative_rms_error},
+                        {"mean_target", cm.match.mean_target * per_mm2},
+                        {"mean_measured", cm.match.mean_measured * per_mm2},
+                        {"interior_particles", cm.match.interior},
+                        {"margin", cm.margin / units::mm}};
+}
+
+void report_stability(const StabilityReport& st, json& j) {
+  j["stability"] = {{"checked", st.checked},
+                    {"stable", st.stable},
+                    {"min_eigenvalue", st.min_eigenvalue / units::N_per_mm},
+                    {"lower_bound", st.lower_bound / units::N_per_mm},
+                    {"shift", st.shift / units::N_per_mm},
+                    {"seconds", st.seconds},
+                    {"message", st.message}};
+}
+
+// The stress at each cut and hole.
+void report_cuts(const RunResult& r, json& j) {
+  j["cuts"] = nlohmann::json::array();
+  for (const StressConcentration& c : r.concentrations) {
+    nlohmann::json cj = {{"step", c.name},
+                         {"kind", c.kind},
+                         {"peak_stress", c.peak_stress / units::MPa},
+                         {"peak_at", {c.peak_at.x() / units::mm, c.peak_at.y() / units::mm}},
+                         {"far_field_stress", c.far_field_stress / units::MPa},
+                         {"concentration", c.concentration}};
+    if (c.has_edge) {
+      cj["edge_stress"] = c.edge_stress / units::MPa;
+      cj["edge_concentration"] = c.edge_concentration;
+      cj["edge_angle"] = c.edge_angle * 180.0 / std::numbers::pi;
+      cj["hole_radius"] = c.hole_radius / units::mm;
     }
-    const StabilityReport& st = r.stability;
-    j["stability"] = {{"checked", st.checked},
-                      {"stable", st.stable},
-                      {"min_eigenvalue", st.min_eigenvalue / units::N_per_mm},
-                      {"lower_bound", st.lower_bound / units::N_per_mm},
-                      {"shift", st.shift / units::N_per_mm},
-                      {"seconds", st.seconds},
-                      {"message", st.message}};
-    j["cuts"] = nlohmann::json::array();
-    for (const StressConcentration& c : r.concentrations) {
-      nlohmann::json cj = {{"step", c.name},
-                           {"kind", c.kind},
-                           {"peak_stress", c.peak_stress / units::MPa},
-                           {"peak_at", {c.peak_at.x() / units::mm, c.peak_at.y() / units::mm}},
-                           {"far_field_stress", c.far_field_stress / units::MPa},
-                           {"concentration", c.concentration}};
-      if (c.has_edge) {
-        cj["edge_stress"] = c.edge_stress / units::MPa;
-        cj["edge_concentration"] = c.edge_concentration;
-        cj["edge_angle"] = c.edge_angle * 180.0 / std::numbers::pi;
-        cj["hole_radius"] = c.hole_radius / units::mm;
-      }
-      j["cuts"].push_back(cj);
-    }
+    j["cuts"].push_back(cj);
   }
-  j["units"] = {
+}
+
+// The unit of every number in the report.
+json report_units() {
+  return {
       {"residual", "N"},
       {"residual_relative", "1 (residual / (k_stretch x grid spacing))"},
       {"wall_seconds", "s"},
@@ -166,6 +184,21 @@ nlohmann::json make_report(const Scene& scene, const RunResult& r) {
       {"shape.bbox_min", "mm"},
       {"shape.bbox_max", "mm"},
       {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};
+}
+
+}  // namespace
+
+json make_report(const Scene& scene, const RunResult& r) {
+  json j;
+  report_run(scene, r, j);
+  report_steps(r, j);
+  if (!r.solve.diverged) {
+    report_form(r, j);
+    if (r.curvature_map) report_curvature_map(*r.curvature_map, j);
+    report_stability(r.stability, j);
+    report_cuts(r, j);
+  }
+  j["units"] = report_units();
   return j;
 }
 

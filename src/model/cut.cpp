@@ -144,19 +144,14 @@ int cut_along(Membrane& m, const std::vector<Vec2>& line, std::vector<Vec2>* whe
   return removed;
 }
 
-int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
+namespace {
+
+// The sheet rebuilt on the nodes outside the hole (the new edge carries half stiffness), its
+// particles carrying the old ones' state, pins and process state.
+Membrane rebuild_without(const Membrane& m, const std::vector<bool>& keep_node,
+                         std::vector<int>& new_of_old) {
   const GridSheet& g = m.sheet.grid;
   const Model& old = m.sheet.model;
-  std::vector<bool> keep_node(static_cast<size_t>(g.nx()) * g.ny(), false);
-  int inside = 0;
-  for (int p = 0; p < old.num_particles(); ++p) {
-    const bool in = hole.contains(m.state.x.col(p).head<2>());
-    keep_node[node_id(g, p)] = !in;
-    inside += in;
-    if (in && where) where->push_back(old.reference.col(p).head<2>());
-  }
-  if (inside == 0) return 0;
-
   GridSpec spec{g.width(), g.height(), g.nx(), g.ny()};
   const double hx = g.hx(), hy = g.hy();
   const int nx = g.nx();
@@ -174,7 +169,7 @@ int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
   Membrane n = make_membrane(std::move(rebuilt));
   const GridSheet& ng = n.sheet.grid;
   Model& nm = n.sheet.model;
-  std::vector<int> new_of_old(old.num_particles(), -1);
+  new_of_old.assign(static_cast<size_t>(old.num_particles()), -1);
   for (int p = 0; p < nm.num_particles(); ++p) {
     const auto [i, j] = ng.node(p);
     const int op = g.particle(i, j);
@@ -192,14 +187,19 @@ int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
   n.resin_side = m.resin_side;
   n.releasing = m.releasing;
   n.release_level = m.release_level;
+  return n;
+}
 
-  // Lattice springs: the rebuilt stiffness (the new edge carries half), the old process state;
-  // springs an earlier cut removed stay removed.
-  const Springs& os = old.springs;
+// Lattice springs: the rebuilt stiffness, the old process state; springs an earlier cut removed
+// stay removed. Added springs whose ends survive come along.
+void carry_springs(const Membrane& m, const std::vector<int>& new_of_old, Membrane& n) {
+  const GridSheet& g = m.sheet.grid;
+  const GridSheet& ng = n.sheet.grid;
+  const Springs& os = m.sheet.model.springs;
   std::map<SpringKey, int> old_spring;
   for (int s = 0; s < os.size(); ++s)
     if (os.family[s] != SpringFamily::added) old_spring[spring_key(g, os, s)] = s;
-  Springs& ns = nm.springs;
+  Springs& ns = n.sheet.model.springs;
   std::vector<bool> keep(ns.size(), false);
   for (int s = 0; s < ns.size(); ++s) {
     const auto it = old_spring.find(spring_key(ng, ns, s));
@@ -226,13 +226,19 @@ int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
     n.resin_length.push_back(m.resin_length[s]);
     n.frame_length.push_back(m.frame_length[s]);
   }
-  // Bending elements and triangles: those that still exist, with their resin.
+}
+
+// Bending elements and triangles: those that still exist, with their resin.
+void carry_bending(const Membrane& m, Membrane& n) {
+  const GridSheet& g = m.sheet.grid;
+  const GridSheet& ng = n.sheet.grid;
+  const Model& old = m.sheet.model;
   std::map<BendKey, int> old_bend;
   for (int e = 0; e < old.bending.size(); ++e) {
     const auto& v = old.bending.v[e];
     old_bend[{node_id(g, v[0]), node_id(g, v[1]), node_id(g, v[2])}] = e;
   }
-  Bending& nb = nm.bending;
+  Bending& nb = n.sheet.model.bending;
   std::vector<bool> keep_bend(nb.size(), false);
   for (int e = 0; e < nb.size(); ++e) {
     const auto& v = nb.v[e];
@@ -250,7 +256,12 @@ int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
   for (const Triangle& t : m.sheet.triangles) old_tri[tri_key(g, t)] = true;
   std::erase_if(n.sheet.triangles,
                 [&](const Triangle& t) { return !old_tri.contains(tri_key(ng, t)); });
-  // Hinges whose four particles and two triangles survive, with their moments.
+}
+
+// Hinges whose four particles and two triangles survive, with their moments.
+void carry_hinges(const Membrane& m, const std::vector<int>& new_of_old, Membrane& n) {
+  const GridSheet& ng = n.sheet.grid;
+  const Model& old = m.sheet.model;
   std::map<TriKey, bool> new_tri;
   for (const Triangle& t : n.sheet.triangles) new_tri[tri_key(ng, t)] = true;
   for (int e = 0; e < old.hinges.size(); ++e) {
@@ -263,13 +274,32 @@ int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
     alive = alive && new_tri.contains(tri_key(ng, Triangle(v[0], v[1], v[2]))) &&
             new_tri.contains(tri_key(ng, Triangle(v[1], v[0], v[3])));
     if (!alive) continue;
-    nm.hinges.add(v, old.hinges.moment[e]);
+    n.sheet.model.hinges.add(v, old.hinges.moment[e]);
     n.hinge_full_moment.push_back(m.hinge_full_moment[e]);
   }
+}
 
-  for (int s = 0; s < ns.size(); ++s) update_spring(n, s);
+}  // namespace
 
-  const int removed = old.num_particles() - nm.num_particles();
+int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
+  const GridSheet& g = m.sheet.grid;
+  const Model& old = m.sheet.model;
+  std::vector<bool> keep_node(static_cast<size_t>(g.nx()) * g.ny(), false);
+  int inside = 0;
+  for (int p = 0; p < old.num_particles(); ++p) {
+    const bool in = hole.contains(m.state.x.col(p).head<2>());
+    keep_node[node_id(g, p)] = !in;
+    inside += in;
+    if (in && where) where->push_back(old.reference.col(p).head<2>());
+  }
+  if (inside == 0) return 0;
+  std::vector<int> new_of_old;
+  Membrane n = rebuild_without(m, keep_node, new_of_old);
+  carry_springs(m, new_of_old, n);
+  carry_bending(m, n);
+  carry_hinges(m, new_of_old, n);
+  for (int s = 0; s < n.sheet.model.springs.size(); ++s) update_spring(n, s);
+  const int removed = old.num_particles() - n.sheet.model.num_particles();
   m = std::move(n);
   return removed;
 }

@@ -196,17 +196,17 @@ Eigen::SparseMatrix<double> potential_hessian(const Model& model, const Points& 
   return assembler.assemble(x, 0.0);
 }
 
-SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& o) {
-  const Stopwatch clock;
-  auto seconds = [&] { return clock.seconds(); };
+namespace {
+
+// Numbers the free coordinates into `dof` (-1: held) and returns how many there are. A sheet
+// with no pins can move rigidly: its Hessian has six zero eigenvalues. Holding six coordinates
+// of three particles (the gauge) removes them without changing the equilibrium, since nothing
+// else holds the sheet.
+int number_dofs(const Model& model, const Points& x, std::vector<int>& dof) {
   const int n = model.num_particles();
-  Points& x = state.x;
-  // A sheet with no pins can move rigidly: its Hessian has six zero eigenvalues. Holding six
-  // coordinates of three particles (the gauge) removes them without changing the equilibrium,
-  // since nothing else holds the sheet.
   bool any_pinned = false;
   for (int p = 0; p < n; ++p) any_pinned = any_pinned || model.pinned(p);
-  std::vector<int> dof(static_cast<size_t>(3 * n), 0);
+  dof.assign(static_cast<size_t>(3 * n), 0);
   for (int p = 0; p < n; ++p)
     if (model.pinned(p)) dof[3 * p] = dof[3 * p + 1] = dof[3 * p + 2] = -1;
   if (!any_pinned && n >= 3)
@@ -214,6 +214,46 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   int ndof = 0;
   for (int& d : dof)
     if (d >= 0) d = ndof++;
+  return ndof;
+}
+
+// Backtracking (Armijo) on the energy along d from x; near convergence the energy change drowns
+// in round-off, so a step that lowers the residual (r.residual) is accepted too. Moves x, f and
+// energy and returns true when a step is taken.
+bool line_search(const Model& model, const std::vector<int>& dof, const Eigen::VectorXd& d,
+                 double slope, Points& x, Points& f, double& energy, SolveReport& r) {
+  const int n = model.num_particles();
+  double alpha = 1.0;
+  for (int ls = 0; ls < 30; ++ls, alpha *= 0.5) {
+    Points xt = x;
+    for (int k = 0; k < 3 * n; ++k)
+      if (dof[k] >= 0) xt.data()[k] += alpha * d[dof[k]];
+    const double et = potential_energy(model, xt);
+    Points ft;
+    compute_static_forces(model, xt, ft);
+    ++r.force_passes;
+    const bool armijo = et <= energy + 1e-4 * alpha * slope;
+    const bool roundoff =
+        std::abs(et - energy) <= 1e-12 * std::abs(energy) && max_free_force(model, ft) < r.residual;
+    if (std::isfinite(et) && (armijo || roundoff)) {
+      x = std::move(xt);
+      f = std::move(ft);
+      energy = et;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& o) {
+  const Stopwatch clock;
+  auto seconds = [&] { return clock.seconds(); };
+  const int n = model.num_particles();
+  Points& x = state.x;
+  std::vector<int> dof;
+  const int ndof = number_dofs(model, x, dof);
 
   Points f;
   SolveReport r;
@@ -263,28 +303,7 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
       const Eigen::VectorXd d = ldlt.solve(-g);
       const double slope = g.dot(d);
       if (!(slope < 0.0)) continue;
-      // Backtracking (Armijo) on the energy; near convergence the energy change drowns in
-      // round-off, so a step that lowers the residual is accepted too.
-      double alpha = 1.0;
-      for (int ls = 0; ls < 30; ++ls, alpha *= 0.5) {
-        Points xt = x;
-        for (int k = 0; k < 3 * n; ++k)
-          if (dof[k] >= 0) xt.data()[k] += alpha * d[dof[k]];
-        const double et = potential_energy(model, xt);
-        Points ft;
-        compute_static_forces(model, xt, ft);
-        ++r.force_passes;
-        const bool armijo = et <= energy + 1e-4 * alpha * slope;
-        const bool roundoff =
-            std::abs(et - energy) <= 1e-12 * std::abs(energy) && residual(ft) < r.residual;
-        if (std::isfinite(et) && (armijo || roundoff)) {
-          x = std::move(xt);
-          f = std::move(ft);
-          energy = et;
-          stepped = true;
-          break;
-        }
-      }
+      stepped = line_search(model, dof, d, slope, x, f, energy, r);
     }
     if (!stepped) {
       r.message = "newton: no downhill step found at iteration " + std::to_string(it);

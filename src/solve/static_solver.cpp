@@ -53,6 +53,59 @@ void StaticRelaxation::reset(const Model& model, const Points& x) {
   size0_ = std::max(sheet_extent(x), 1e-12);
 }
 
+namespace {
+
+std::string divergence_message(long it, bool finite) {
+  std::ostringstream msg;
+  msg << "static solver diverged at iteration " << it << ": "
+      << (finite ? "the sheet blew up (100x its size)" : "forces became NaN/Inf")
+      << ". Check for coincident particles or extreme stiffness contrast, give a free sheet "
+         "pins, or try rk4 with damping D.";
+  return msg.str();
+}
+
+}  // namespace
+
+void StaticRelaxation::fire_step(const Model& model, Points& x, const Points& f, long it) {
+  // FIRE 2.0 parameters (dimensionless: masses are stiffnesses, so time is in units of 1/omega).
+  constexpr double dt_max = 1.0, dt_min = 0.02, f_inc = 1.1, f_dec = 0.5;
+  constexpr double f_alpha = 0.99;
+  constexpr int n_delay = 20;
+
+  const int n = model.num_particles();
+  Points& v = v_;
+  const std::vector<double>& mass = mass_;
+  // Power of the forces on the current velocities decides: speed up, or stop and back off.
+  double power = 0.0, v_norm2 = 0.0, g_norm2 = 0.0;
+  for (int p = 0; p < n; ++p) {
+    if (model.pinned(p)) continue;
+    power += f.col(p).dot(v.col(p));
+    v_norm2 += mass[p] * v.col(p).squaredNorm();
+    g_norm2 += f.col(p).squaredNorm() / mass[p];
+  }
+  if (power > 0.0) {
+    if (++n_positive_ > n_delay) {
+      dt_ = std::min(dt_ * f_inc, dt_max);
+      alpha_ *= f_alpha;
+    }
+  } else {
+    n_positive_ = 0;
+    if (it > n_delay) dt_ = std::max(dt_ * f_dec, dt_min);
+    alpha_ = kAlphaStart;
+    x -= 0.5 * dt_ * v;  // undo half of the overshooting step
+    v.setZero();
+  }
+  // Semi-implicit Euler on the scaled masses, with FIRE's steering of v towards the force
+  // (done in the mass-weighted metric, where the scaled system is isotropic).
+  const double mix = g_norm2 > 0.0 ? alpha_ * std::sqrt(v_norm2 / g_norm2) : 0.0;
+  for (int p = 0; p < n; ++p) {
+    if (model.pinned(p)) continue;
+    const Vec3 a = f.col(p) / mass[p];
+    v.col(p) = (1.0 - alpha_) * (v.col(p) + dt_ * a) + mix * a;
+    x.col(p) += dt_ * v.col(p);
+  }
+}
+
 SolveReport StaticRelaxation::advance(const Model& model, State& state, long iterations) {
   const Stopwatch clock;
   auto seconds = [&] { return clock.seconds(); };
@@ -60,48 +113,13 @@ SolveReport StaticRelaxation::advance(const Model& model, State& state, long ite
   const int n = model.num_particles();
   if (v_.cols() != n || static_cast<int>(mass_.size()) != n) reset(model, state.x);
 
-  // FIRE 2.0 parameters (dimensionless: masses are stiffnesses, so time is in units of 1/omega).
-  constexpr double dt_max = 1.0, dt_min = 0.02, f_inc = 1.1, f_dec = 0.5;
-  constexpr double f_alpha = 0.99;
-  constexpr int n_delay = 20;
-
   Points& x = state.x;
-  Points& v = v_;
-  const std::vector<double>& mass = mass_;
   Points f;
   SolveReport r;
   compute_static_forces(model, x, f);
   for (long k = 1; k <= iterations; ++k) {
     const long it = ++iterations_;
-    // Power of the forces on the current velocities decides: speed up, or stop and back off.
-    double power = 0.0, v_norm2 = 0.0, g_norm2 = 0.0;
-    for (int p = 0; p < n; ++p) {
-      if (model.pinned(p)) continue;
-      power += f.col(p).dot(v.col(p));
-      v_norm2 += mass[p] * v.col(p).squaredNorm();
-      g_norm2 += f.col(p).squaredNorm() / mass[p];
-    }
-    if (power > 0.0) {
-      if (++n_positive_ > n_delay) {
-        dt_ = std::min(dt_ * f_inc, dt_max);
-        alpha_ *= f_alpha;
-      }
-    } else {
-      n_positive_ = 0;
-      if (it > n_delay) dt_ = std::max(dt_ * f_dec, dt_min);
-      alpha_ = kAlphaStart;
-      x -= 0.5 * dt_ * v;  // undo half of the overshooting step
-      v.setZero();
-    }
-    // Semi-implicit Euler on the scaled masses, with FIRE's steering of v towards the force
-    // (done in the mass-weighted metric, where the scaled system is isotropic).
-    const double mix = g_norm2 > 0.0 ? alpha_ * std::sqrt(v_norm2 / g_norm2) : 0.0;
-    for (int p = 0; p < n; ++p) {
-      if (model.pinned(p)) continue;
-      const Vec3 a = f.col(p) / mass[p];
-      v.col(p) = (1.0 - alpha_) * (v.col(p) + dt_ * a) + mix * a;
-      x.col(p) += dt_ * v.col(p);
-    }
+    fire_step(model, x, f, it);
     compute_static_forces(model, x, f);
     ++r.iterations;
     ++r.force_passes;
@@ -112,13 +130,7 @@ SolveReport StaticRelaxation::advance(const Model& model, State& state, long ite
     r.residual_relative = res / o.force_scale;
     if (!std::isfinite(res) || !x.allFinite() || sheet_extent(x) > 100.0 * size0_) {
       r.diverged = true;
-      std::ostringstream msg;
-      msg << "static solver diverged at iteration " << it << ": "
-          << (std::isfinite(res) && x.allFinite() ? "the sheet blew up (100x its size)"
-                                                  : "forces became NaN/Inf")
-          << ". Check for coincident particles or extreme stiffness contrast, give a free "
-             "sheet pins, or try rk4 with damping D.";
-      r.message = msg.str();
+      r.message = divergence_message(it, std::isfinite(res) && x.allFinite());
       r.wall_seconds = seconds();
       return r;
     }

@@ -37,6 +37,8 @@ class StaticRelaxation {
 
  private:
   static constexpr double kAlphaStart = 0.25;
+  // One FIRE iteration from the forces f at x (moves x and the velocities).
+  void fire_step(const Model& model, Points& x, const Points& f, long it);
   StaticOptions options_;
   std::vector<double> mass_;
   Points v_;

@@ -1,0 +1,18 @@
+#pragma once
+// `membra bench --json`: the runs of the solvers on P(n) as JSON, with the speed-ups over RK4 and
+// plain dynamic relaxation of the same size (docs/cli.md, "membra bench").
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "membra/process/bench.hpp"
+
+namespace membra {
+
+// The row of `solver` at size n, or nullptr.
+const BenchRow* find_bench_row(const std::vector<BenchRow>& rows, int n, const std::string& solver);
+
+nlohmann::json bench_report(const std::vector<BenchRow>& rows, const BenchOptions& options,
+                            int threads);
+
+}  // namespace membra

@@ -1,0 +1,41 @@
+#include "membra/io/bench_report.hpp"
+
+#include "membra/version.hpp"
+
+namespace membra {
+
+const BenchRow* find_bench_row(const std::vector<BenchRow>& rows, int n,
+                               const std::string& solver) {
+  for (const auto& r : rows)
+    if (r.n == n && r.solver == solver) return &r;
+  return nullptr;
+}
+
+nlohmann::json bench_report(const std::vector<BenchRow>& rows, const BenchOptions& o, int threads) {
+  nlohmann::json j;
+  j["membra_version"] = kVersion;
+  j["threads"] = threads;
+  j["tolerance"] = o.tolerance;
+  j["budget_seconds"] = o.budget;
+  j["runs"] = nlohmann::json::array();
+  for (const auto& r : rows) {
+    nlohmann::json row = {{"n", r.n},
+                          {"solver", r.solver},
+                          {"converged", r.report.converged},
+                          {"diverged", r.report.diverged},
+                          {"wall_seconds", r.report.wall_seconds},
+                          {"force_passes", r.report.force_passes},
+                          {"iterations", r.report.iterations},
+                          {"residual", r.report.residual},
+                          {"energy", r.energy},
+                          {"angle_defect", r.angle_defect}};
+    // Speed-ups over membra's own RK4 and plain dynamic relaxation of the same size.
+    for (const char* b : {"rk4", "dr_unit"})
+      if (const BenchRow* br = find_bench_row(rows, r.n, b))
+        row[std::string("speedup_vs_") + b] = speedup(r, *br);
+    j["runs"].push_back(row);
+  }
+  return j;
+}
+
+}  // namespace membra
