@@ -110,13 +110,100 @@ double MeshDistance::distance(const Vec3& p, Vec3* closest, Vec3* normal) const 
   return std::sqrt(best);
 }
 
+namespace {
+
+// From a start, a few point-to-point (Kabsch) steps bring the form near the target.
+void point_to_point(const Points& form, const MeshDistance& to_target, RigidMotion& m) {
+  const Eigen::Index n = form.cols();
+  std::vector<Vec3> p(static_cast<size_t>(n)), q(static_cast<size_t>(n));
+  for (int it = 0; it < 5; ++it) {
+    for (Eigen::Index i = 0; i < n; ++i) {
+      p[static_cast<size_t>(i)] = form.col(i);
+      to_target.distance(m.apply(form.col(i)), &q[static_cast<size_t>(i)]);
+    }
+    m = kabsch(p, q);
+  }
+}
+
+// Point-to-plane steps finish the alignment. Linearised: minimise sum ((w x y + t + y - q) . n)^2
+// over the small turn w and shift t, with y the moved form point, q its closest target point and
+// n the normal there.
+void point_to_plane(const Points& form, const MeshDistance& to_target, int iterations,
+                    RigidMotion& m) {
+  const Eigen::Index n = form.cols();
+  double previous = std::numeric_limits<double>::infinity();
+  for (int it = 0; it < iterations; ++it) {
+    Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
+    double sum = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Vec3 y = m.apply(form.col(i));
+      Vec3 qi, ni;
+      to_target.distance(y, &qi, &ni);
+      Eigen::Matrix<double, 6, 1> row;
+      row.head<3>() = y.cross(ni);
+      row.tail<3>() = ni;
+      const double r = (y - qi).dot(ni);
+      a += row * row.transpose();
+      b -= row * r;
+      sum += r * r;
+      // A weak point-to-point term: sliding along the surface is free for the plane term alone
+      // (a flat form on a cylinder would drift off along its axis).
+      Eigen::Matrix<double, 3, 6> j;
+      j.leftCols<3>() = -skew(y);
+      j.rightCols<3>().setIdentity();
+      a += kPointWeight * j.transpose() * j;
+      b -= kPointWeight * j.transpose() * (y - qi);
+      sum += kPointWeight * (y - qi).squaredNorm();
+    }
+    if (it > 0 && previous - sum <= 1e-12 * previous) break;  // no longer improving
+    previous = sum;
+    const Eigen::Matrix<double, 6, 1> step = a.ldlt().solve(b);
+    if (!step.allFinite()) break;
+    const Vec3 w = step.head<3>();
+    const Eigen::Matrix3d small_turn =
+        w.norm() > 0.0 ? Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix()
+                       : Eigen::Matrix3d::Identity();
+    m.rotation = small_turn * m.rotation;
+    m.translation = small_turn * m.translation + step.tail<3>();
+  }
+}
+
+// The error of the form moved by m: both directions, each weighing half, since the vertex
+// densities of form and target differ.
+ShapeError error_after(const Points& form, const std::vector<Triangle>& form_triangles,
+                       const TargetSurface& target, const MeshDistance& to_target,
+                       const RigidMotion& m) {
+  const Eigen::Index n = form.cols();
+  Points moved(3, n);
+  for (Eigen::Index i = 0; i < n; ++i) moved.col(i) = m.apply(form.col(i));
+  const MeshDistance to_form(moved, form_triangles);
+  ShapeError e;
+  e.motion = m;
+  double sum_f = 0.0, sum_t = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double d = to_target.distance(moved.col(i));
+    e.form_distance.push_back(d);
+    sum_f += d * d;
+    e.max = std::max(e.max, d);
+  }
+  for (Eigen::Index i = 0; i < target.x.cols(); ++i) {
+    const double d = to_form.distance(target.x.col(i));
+    sum_t += d * d;
+    e.max = std::max(e.max, d);
+  }
+  e.rms = std::sqrt(0.5 * sum_f / static_cast<double>(n) +
+                    0.5 * sum_t / static_cast<double>(target.x.cols()));
+  return e;
+}
+
+}  // namespace
+
 ShapeError compare_shapes(const Points& form, const std::vector<Triangle>& form_triangles,
                           const TargetSurface& target, int iterations) {
   const MeshDistance to_target(target.x, target.triangles);
   const Vec3 form_centre = form.rowwise().mean();
   const Vec3 target_centre = target.x.rowwise().mean();
-  const Eigen::Index n = form.cols();
-
   ShapeError best;
   best.rms = std::numeric_limits<double>::infinity();
   // Eight starts: four turns about z, each also turned over (about x).
@@ -126,73 +213,9 @@ ShapeError compare_shapes(const Points& form, const std::vector<Triangle>& form_
     m.rotation = Eigen::AngleAxisd(turn, Vec3::UnitZ()).toRotationMatrix();
     if (start >= 4) m.rotation = Eigen::AngleAxisd(std::numbers::pi, Vec3::UnitX()) * m.rotation;
     m.translation = target_centre - m.rotation * form_centre;
-    std::vector<Vec3> p(static_cast<size_t>(n)), q(static_cast<size_t>(n));
-    // A few point-to-point (Kabsch) steps bring the form near; point-to-plane steps finish.
-    for (int it = 0; it < 5; ++it) {
-      for (Eigen::Index i = 0; i < n; ++i) {
-        p[static_cast<size_t>(i)] = form.col(i);
-        to_target.distance(m.apply(form.col(i)), &q[static_cast<size_t>(i)]);
-      }
-      m = kabsch(p, q);
-    }
-    double previous = std::numeric_limits<double>::infinity();
-    for (int it = 0; it < iterations; ++it) {
-      // Linearised: minimise sum ((w x y + t + y - q) . n)^2 over the small turn w and shift t,
-      // with y the moved form point, q its closest target point and n the normal there.
-      Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero();
-      Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
-      double sum = 0.0;
-      for (Eigen::Index i = 0; i < n; ++i) {
-        const Vec3 y = m.apply(form.col(i));
-        Vec3 qi, ni;
-        to_target.distance(y, &qi, &ni);
-        Eigen::Matrix<double, 6, 1> row;
-        row.head<3>() = y.cross(ni);
-        row.tail<3>() = ni;
-        const double r = (y - qi).dot(ni);
-        a += row * row.transpose();
-        b -= row * r;
-        sum += r * r;
-        // A weak point-to-point term: sliding along the surface is free for the plane term
-        // alone (a flat form on a cylinder would drift off along its axis).
-        Eigen::Matrix<double, 3, 6> j;
-        j.leftCols<3>() = -skew(y);
-        j.rightCols<3>().setIdentity();
-        a += kPointWeight * j.transpose() * j;
-        b -= kPointWeight * j.transpose() * (y - qi);
-        sum += kPointWeight * (y - qi).squaredNorm();
-      }
-      if (it > 0 && previous - sum <= 1e-12 * previous) break;  // no longer improving
-      previous = sum;
-      const Eigen::Matrix<double, 6, 1> step = a.ldlt().solve(b);
-      if (!step.allFinite()) break;
-      const Vec3 w = step.head<3>();
-      const Eigen::Matrix3d small_turn =
-          w.norm() > 0.0 ? Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix()
-                         : Eigen::Matrix3d::Identity();
-      m.rotation = small_turn * m.rotation;
-      m.translation = small_turn * m.translation + step.tail<3>();
-    }
-    // Both directions, each weighing half: vertex densities of form and target differ.
-    Points moved(3, n);
-    for (Eigen::Index i = 0; i < n; ++i) moved.col(i) = m.apply(form.col(i));
-    const MeshDistance to_form(moved, form_triangles);
-    ShapeError e;
-    e.motion = m;
-    double sum_f = 0.0, sum_t = 0.0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double d = to_target.distance(moved.col(i));
-      e.form_distance.push_back(d);
-      sum_f += d * d;
-      e.max = std::max(e.max, d);
-    }
-    for (Eigen::Index i = 0; i < target.x.cols(); ++i) {
-      const double d = to_form.distance(target.x.col(i));
-      sum_t += d * d;
-      e.max = std::max(e.max, d);
-    }
-    e.rms = std::sqrt(0.5 * sum_f / static_cast<double>(n) +
-                      0.5 * sum_t / static_cast<double>(target.x.cols()));
+    point_to_point(form, to_target, m);
+    point_to_plane(form, to_target, iterations, m);
+    ShapeError e = error_after(form, form_triangles, target, to_target, m);
     if (e.rms < best.rms) best = std::move(e);
   }
   return best;

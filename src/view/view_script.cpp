@@ -125,36 +125,41 @@ std::string view_script_help() {
   return h;
 }
 
-bool run_session_command(const ScriptCommand& c, ViewerSession& session, ViewSettings& v) {
-  auto check = [&](const std::string& why) {
-    if (!why.empty()) throw InputError(c.where, c.name + ": " + why);
-  };
+namespace {
+
+// Throws the command's InputError when `why` says it could not be done.
+void check(const ScriptCommand& c, const std::string& why) {
+  if (!why.empty()) throw InputError(c.where, c.name + ": " + why);
+}
+
+// The session's commands (process, editing, simulation, parameters); false when `c` is none.
+bool run_process_command(const ScriptCommand& c, ViewerSession& session, const ViewSettings& v) {
   const std::string& n = c.name;
   if (n == "stretch") {
-    check(session.stretch());
+    check(c, session.stretch());
   } else if (n == "impregnate") {
-    check(session.impregnate());
+    check(c, session.impregnate());
   } else if (n == "release") {
-    check(session.release());
+    check(c, session.release());
   } else if (n == "play") {
     session.play_scene_protocol();
   } else if (n == "step") {
     for (long i = 0; i < static_cast<long>(c.number(0)); ++i) {
       const SliceReport r = session.advance(v.iterations_per_frame);
-      if (r.diverged) check(r.message);
+      if (r.diverged) check(c, r.message);
     }
   } else if (n == "settle") {
     const SliceReport r = session.settle();
-    if (r.diverged) check(r.message);
-    if (!r.settled) check("the sheet did not settle within the iteration budget");
+    if (r.diverged) check(c, r.message);
+    if (!r.settled) check(c, "the sheet did not settle within the iteration budget");
   } else if (n == "paint" || n == "erase") {
-    check(session.paint(at_mm(c, 0), c.number(2) * units::mm, n == "erase"));
+    check(c, session.paint(at_mm(c, 0), c.number(2) * units::mm, n == "erase"));
   } else if (n == "cut") {
-    check(session.cut(at_mm(c, 0), at_mm(c, 2)));
+    check(c, session.cut(at_mm(c, 0), at_mm(c, 2)));
   } else if (n == "hole") {
-    check(session.hole(at_mm(c, 0), c.number(2) * units::mm));
+    check(c, session.hole(at_mm(c, 0), c.number(2) * units::mm));
   } else if (n == "pin") {
-    check(session.toggle_pin(at_mm(c, 0)));
+    check(c, session.toggle_pin(at_mm(c, 0)));
   } else if (n == "set") {
     LiveParameters p = session.parameters();
     const std::string& what = c.words[0];
@@ -165,10 +170,20 @@ bool run_session_command(const ScriptCommand& c, ViewerSession& session, ViewSet
     if (what == "D") p.D = value;
     if (what == "lambda_x") p.lambda.x() = value;
     if (what == "lambda_y") p.lambda.y() = value;
-    check(session.set_parameters(p));
+    check(c, session.set_parameters(p));
   } else if (n == "mode") {
     session.set_mode(c.words[0] == "relax" ? LiveMode::relax : LiveMode::dynamics);
-  } else if (n == "color") {
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The view's commands (colours, camera, what is drawn) and undo/redo/reset; false when `c` is
+// none.
+bool run_view_command(const ScriptCommand& c, ViewerSession& session, ViewSettings& v) {
+  const std::string& n = c.name;
+  if (n == "color") {
     v.color = *parse_color_mode(c.words[0]);
     v.range.reset();
   } else if (n == "range") {
@@ -181,7 +196,7 @@ bool run_session_command(const ScriptCommand& c, ViewerSession& session, ViewSet
   } else if (n == "orbit") {
     v.camera.orbit(c.number(0), c.number(1));
   } else if (n == "zoom") {
-    if (!(c.number(0) > 0.0)) check("the factor must be positive");
+    if (!(c.number(0) > 0.0)) check(c, "the factor must be positive");
     v.camera.zoom(c.number(0));
   } else if (n == "fit") {
     v.camera_fitted = false;
@@ -190,19 +205,26 @@ bool run_session_command(const ScriptCommand& c, ViewerSession& session, ViewSet
   } else if (n == "particles") {
     v.show_particles = c.words[0] == "on";
   } else if (n == "brush") {
-    if (!(c.number(0) > 0.0)) check("the radius must be positive");
+    if (!(c.number(0) > 0.0)) check(c, "the radius must be positive");
     v.brush_radius = c.number(0) * units::mm;
   } else if (n == "undo") {
-    if (!session.undo()) check("nothing to undo");
+    if (!session.undo()) check(c, "nothing to undo");
   } else if (n == "redo") {
-    if (!session.redo()) check("nothing to redo");
+    if (!session.redo()) check(c, "nothing to redo");
   } else if (n == "reset") {
     session.reset();
     v.camera_fitted = false;
   } else {
-    return false;  // screenshot, save, export, fps, quit, tool, drag, click: the window's
+    return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool run_session_command(const ScriptCommand& c, ViewerSession& session, ViewSettings& v) {
+  // Not here: screenshot, save, export, fps, quit, tool, drag, click (the window's).
+  return run_process_command(c, session, v) || run_view_command(c, session, v);
 }
 
 }  // namespace membra
