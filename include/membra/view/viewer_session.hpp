@@ -54,6 +54,7 @@ struct SliceReport {
   std::string message;
 };
 
+// Not to be moved while a step's path is followed: the path refers to the session's membrane.
 class ViewerSession {
  public:
   // Builds the flat sheet of `scene` (throws InputError like prepare_scene). The stretch, resin
