@@ -134,7 +134,10 @@ CLI::App* add_bench(CLI::App& app, Args& a) {
   bench->add_option("--sizes", a.bench.sizes, "Grid sizes n (n x n particles)")
       ->delimiter(',')
       ->check(CLI::Range(3, 4096));
-  bench->add_option("--solvers", a.bench.solvers, "static, dr_unit, newton, rk4")->delimiter(',');
+  std::string names;
+  for (std::string_view n : membra::kBenchSolvers)
+    names += (names.empty() ? "" : ", ") + std::string(n);
+  bench->add_option("--solvers", a.bench.solvers, names)->delimiter(',');
   bench->add_option("--budget", a.bench.budget, "Wall-time budget per run, s")
       ->check(CLI::PositiveNumber);
   bench->add_flag("--json", a.bench.json, "Machine-readable output on stdout");

@@ -15,10 +15,7 @@ const std::vector<std::string_view> kPresetKeys = {"preset", "amplitude"};
 void read_image_field(const JsonObject& o, const std::filesystem::path& base_dir, FieldSpec& s) {
   s.kind = FieldSpec::Kind::image;
   s.file = o.string("image", std::nullopt);
-  GreyImage img = load_grey_image(base_dir / s.file, o.pointer("image"));
-  s.grey = std::move(img.value);
-  s.image_width = img.width;
-  s.image_height = img.height;
+  s.image = load_grey_image(base_dir / s.file, o.pointer("image"));
   const auto range = o.numbers("range", 2);
   s.range = Vec2(range[0], range[1]);
   if (o.has("origin")) {

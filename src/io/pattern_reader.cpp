@@ -48,10 +48,7 @@ double degrees(const JsonObject& o) {
 void read_image(const JsonObject& o, const std::filesystem::path& base_dir, PatternSpec& s) {
   s.kind = PatternSpec::Kind::image;
   s.file = o.string("file", std::nullopt);
-  GreyImage img = load_grey_image(base_dir / s.file, o.pointer("file"));
-  s.grey = std::move(img.value);
-  s.image_width = img.width;
-  s.image_height = img.height;
+  s.image = load_grey_image(base_dir / s.file, o.pointer("file"));
   if (o.has("origin")) s.origin = read_vec2(o, "origin");
   if (o.has("size")) s.size = read_vec2(o, "size", Bounds::positive());
   s.threshold = o.number("threshold", 0.5, Bounds::between(0.0, 1.0));

@@ -36,20 +36,6 @@ json mm_points(const std::vector<Vec2>& points) {
   return out;
 }
 
-const char* family_name(SpringFamily f) {
-  switch (f) {
-    case SpringFamily::stretch:
-      return "stretch";
-    case SpringFamily::shear:
-      return "shear";
-    case SpringFamily::flex:
-      return "flex";
-    case SpringFamily::added:
-      return "added";
-  }
-  return "stretch";
-}
-
 const char* direction_name(GrowDirection d) {
   switch (d) {
     case GrowDirection::all:
@@ -107,7 +93,7 @@ json write_grow(const GrowStep& s) {
   const GrowSpec& g = s.grow;
   json j = {{"step", "grow"},
             {"factor", write_field(s.factor)},
-            {"family", g.family ? family_name(*g.family) : "all"},
+            {"family", g.family ? std::string(to_string(*g.family)) : "all"},
             {"direction", direction_name(g.direction)},
             {"center", mm(g.center)}};
   if (s.region) j["region"] = write_pattern(*s.region);
@@ -118,7 +104,7 @@ json write_add_springs(const AddSpringsStep& s) {
   const AddSpringsSpec& a = s.add;
   json j = {{"step", "add_springs"},
             {"pattern", write_pattern(s.region)},
-            {"along", a.along ? family_name(*a.along) : "any"},
+            {"along", a.along ? std::string(to_string(*a.along)) : "any"},
             {"count", a.count},
             {"rest_factor", a.rest_factor}};
   if (a.stiffness > 0.0) j["stiffness"] = in(a.stiffness, units::N_per_mm);

@@ -13,8 +13,8 @@ ScalarField formula_field(const std::string& text, const FormulaContext& context
 
 // Bilinear samples of the image stretched over [origin, origin + size]; row 0 is the top.
 ScalarField image_field(const FieldSpec& s, const Vec2& sheet_size) {
-  auto grey = std::make_shared<std::vector<float>>(s.grey);
-  const int w = s.image_width, h = s.image_height;
+  auto grey = std::make_shared<std::vector<float>>(s.image.value);
+  const int w = s.image.width, h = s.image.height;
   const Vec2 origin = s.origin.value_or(Vec2::Zero()), size = s.size.value_or(sheet_size);
   const double lo = s.range.x(), hi = s.range.y();
   return [grey, w, h, origin, size, lo, hi](const Vec2& p) {

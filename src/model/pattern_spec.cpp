@@ -38,8 +38,9 @@ PatternPtr make_pattern(const PatternSpec& s, const Vec2& frame_size) {
     case PatternSpec::Kind::polygon:
       return make_polygon(s.points);
     case PatternSpec::Kind::image:
-      return make_raster(s.grey, s.image_width, s.image_height, s.origin.value_or(Vec2::Zero()),
-                         s.size.value_or(frame_size), s.threshold, s.invert);
+      return make_raster(s.image.value, s.image.width, s.image.height,
+                         s.origin.value_or(Vec2::Zero()), s.size.value_or(frame_size), s.threshold,
+                         s.invert);
     case PatternSpec::Kind::union_of:
       return make_union(make_parts(s, frame_size));
     case PatternSpec::Kind::difference:

@@ -10,7 +10,7 @@
 #include "membra/model/cut.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/process/steps.hpp"
-#include "membra/solve/dynamics.hpp"
+#include "membra/solve/solver.hpp"
 
 namespace membra {
 namespace {
@@ -240,15 +240,16 @@ SliceReport ViewerSession::advance_slice(long max_iterations, double max_seconds
     o.max_seconds = max_seconds;
     r = relaxation_.advance(model, m.state, max_iterations);
   } else {
-    DynamicsOptions o;
-    o.method =
-        scene_.simulation.is_static() ? "rk4" : std::string(solver_name(scene_.simulation.solver));
+    // Motion in time: the scene's integrator, or the paper's RK4 for an equilibrium scene.
+    SolverSettings o;
     o.dt = params_.T;
     o.steps = max_iterations;
     o.tolerance = scene_.simulation.tolerance;
     o.force_scale = prepared_.force_scale;
     o.max_seconds = max_seconds;
-    r = run_dynamics(model, m.state, o);
+    const Solver integrator =
+        scene_.simulation.is_static() ? Solver::rk4 : scene_.simulation.solver;
+    r = solve_with(integrator, model, m.state, o);
   }
   rep.iterations = r.iterations;
   rep.residual_relative = r.residual_relative;

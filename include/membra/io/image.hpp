@@ -4,13 +4,9 @@
 #include <string>
 #include <vector>
 
-namespace membra {
+#include "membra/core/grey_image.hpp"
 
-// A grey raster, values 0 (black) .. 1 (white), row 0 at the top.
-struct GreyImage {
-  int width = 0, height = 0;
-  std::vector<float> value;
-};
+namespace membra {
 
 // Reads a PNG (or any format stb_image reads) as grey. An RGB(A) image is accepted only if every
 // pixel has R = G = B. Throws InputError at `where` if the file cannot be read or has colour.

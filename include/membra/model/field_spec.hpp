@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "membra/core/grey_image.hpp"
 #include "membra/model/formula.hpp"
 
 namespace membra {
@@ -22,8 +23,7 @@ struct FieldSpec {
   double amplitude = 0.3;  // preset: its `a`
   // image: grey 0..1 mapped onto [range lo, range hi], bilinear
   std::string file;  // as the scene names it (relative to the scene)
-  std::vector<float> grey;
-  int image_width = 0, image_height = 0;
+  GreyImage image;
   Vec2 range = Vec2(0.0, 1.0);
   std::optional<Vec2> origin, size;  // placement on the paper, m (default: the whole sheet)
 };

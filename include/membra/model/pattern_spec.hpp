@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "membra/core/grey_image.hpp"
 #include "membra/model/pattern.hpp"
 
 namespace membra {
@@ -24,9 +25,8 @@ struct PatternSpec {
   double a = 0.0, b = 0.0;           // hyperbola: x^2/a^2 - y^2/b^2 = 1, m
   std::string opens = "x";           // hyperbola: x | y | both
   // image: resin where the grey value is below the threshold (at/above when inverted)
-  std::string file;         // as the scene names it (relative to the scene)
-  std::vector<float> grey;  // 0 black .. 1 white, row 0 at the top
-  int image_width = 0, image_height = 0;
+  std::string file;  // as the scene names it (relative to the scene)
+  GreyImage image;
   std::optional<Vec2> origin, size;  // placement, m (default: the whole frame)
   double threshold = 0.5;
   bool invert = false;
