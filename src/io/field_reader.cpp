@@ -67,9 +67,4 @@ ScalarField build_field(const FieldSpec& spec, const std::string& pointer,
   }
 }
 
-ScalarField read_field(const nlohmann::json& j, const std::string& pointer,
-                       const std::filesystem::path& base_dir, const FormulaContext& context) {
-  return build_field(read_field_spec(j, pointer, base_dir), pointer, context);
-}
-
 }  // namespace membra

@@ -112,11 +112,6 @@ PatternSpec read_pattern_spec(const json& j, const std::string& pointer,
   return s;
 }
 
-PatternPtr read_pattern(const json& j, const std::string& pointer,
-                        const std::filesystem::path& base_dir, const Vec2& frame_size) {
-  return make_pattern(read_pattern_spec(j, pointer, base_dir), frame_size);
-}
-
 std::map<std::string, std::vector<std::string>> pattern_known_keys() {
   return {{"", to_strings(kKinds)},
           {"strip", to_strings(kStripKeys)},

@@ -22,8 +22,4 @@ FieldSpec read_field_spec(const nlohmann::json& j, const std::string& pointer,
 ScalarField build_field(const FieldSpec& spec, const std::string& pointer,
                         const FormulaContext& context);
 
-// Both at once.
-ScalarField read_field(const nlohmann::json& j, const std::string& pointer,
-                       const std::filesystem::path& base_dir, const FormulaContext& context);
-
 }  // namespace membra

@@ -18,12 +18,6 @@ namespace membra {
 PatternSpec read_pattern_spec(const nlohmann::json& j, const std::string& pointer,
                               const std::filesystem::path& base_dir);
 
-// Parses the pattern at `pointer` and builds its shape. Image paths are relative to `base_dir`.
-// `frame_size` (m) is the size of the stretched frame, used to extend hyperbola branches across it.
-// Throws InputError naming the JSON pointer of a bad value.
-PatternPtr read_pattern(const nlohmann::json& j, const std::string& pointer,
-                        const std::filesystem::path& base_dir, const Vec2& frame_size);
-
 // Keys of each pattern kind, for the schema test.
 std::map<std::string, std::vector<std::string>> pattern_known_keys();
 
