@@ -29,7 +29,8 @@ enum Exit : int {
   kDiverged = 3,
   kOutput = 4,
   kUnreachable = 5,  // membra design: the target cannot be reached (best attempt written)
-  kNoDisplay = 6     // membra view: no window can be opened
+  kNoDisplay = 6,    // membra view: no window can be opened
+  kNotAtRest = 7     // membra run: an equilibrium solver ended unconverged or at a saddle
 };
 
 int cmd_validate(const std::string& scene_file, const std::vector<std::string>& sets, bool quiet) {
@@ -44,6 +45,23 @@ int cmd_validate(const std::string& scene_file, const std::vector<std::string>& 
     throw membra::InputError(scene_file + ": " + e.where(), e.detail());
   }
   return kOk;
+}
+
+// An equilibrium solver's end state that is no stable equilibrium (unconverged, or a saddle):
+// says so on stderr with what to try, so that scripts can tell by the exit code too.
+bool warn_if_not_at_rest(const std::string& scene_file, const membra::Scene& scene,
+                         const membra::RunResult& r) {
+  if (!scene.simulation.is_static()) return false;
+  const bool saddle = r.stability.checked && !r.stability.stable;
+  if (r.solve.converged && !saddle) return false;
+  std::cerr << "membra: " << scene_file << ": "
+            << (r.solve.converged ? "the end state is a saddle of the energy, not a stable form: "
+                                  : "not converged: ")
+            << (r.solve.converged ? r.stability.message : r.solve.message) << "\n"
+            << "membra: try more release increments (\"increments\"), another perturbation seed, "
+               "or the other equilibrium solver (--set simulation.solver=static|newton); the "
+               "outputs show the end state as it is\n";
+  return true;
 }
 
 int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
@@ -80,9 +98,10 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   if (!quiet) {
     std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"
               << "results in " << out.dir().string() << "/ (final.obj, final.ply, report.json"
+              << (r.solve.converged ? "" : "; not an equilibrium")
               << (render_note.empty() ? ", curvature.png, stress.png" : "") << ")\n";
   }
-  return kOk;
+  return warn_if_not_at_rest(scene_file, scene, r) ? kNotAtRest : kOk;
 }
 
 // Every subcommand's arguments, filled in by CLI11.

@@ -72,14 +72,20 @@ StepReport follow_path(const Scene& scene, const PreparedScene& p, State& s,
   }
   const double thickness = p.membrane.sheet.material.thickness;
   const int n = path.increments;
+  // Newton starts each increment from the secant predictor: the last increment's motion
+  // repeated, so that it begins near the next equilibrium instead of at the last one.
+  const bool predict = scene.simulation.solver == Solver::newton;
+  Points before, last;  // the equilibria of the two increments before this one
   for (int k = 1; k <= n && !rep.solve.diverged; ++k) {
     path.set(static_cast<double>(k) / n);
+    if (predict && before.cols() == s.x.cols()) s.x += last - before;
     const std::string stage = name + " " + std::to_string(k) + "/" + std::to_string(n);
     // Intermediate increments only carry the sheet along the path: a looser tolerance there
     // (simulation.path_tolerance) saves their slow tails; the last one is solved in full.
     const double tolerance = k < n ? scene.simulation.path_tolerance : scene.simulation.tolerance;
     accumulate(rep.solve, solve_scene_step(scene, p, s, stage, progress, nullptr, tolerance));
     recorder.record(p.membrane.sheet.model, s.x, thickness);
+    if (predict) before = std::move(last), last = s.x;
   }
   return rep;
 }

@@ -2,27 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <random>
 #include <vector>
 
 #include <Eigen/CholmodSupport>
 
 #include <dlfcn.h>
-#include <Eigen/Eigenvalues>
-#include <Eigen/SparseCore>
+#include <omp.h>
 
-#include "membra/model/bend_kernel.hpp"
 #include "membra/model/forces.hpp"
-#include "membra/model/hinge_kernel.hpp"
+#include "membra/solve/rigid_gauge.hpp"
 
 namespace membra {
 namespace {
 
 // The supernodal factorization calls BLAS; OpenBLAS's threads spin against the force passes'
-// and against other work (3x the wall time measured on a busy 2-core machine: 59 s against 41 s
-// for exp2) and make the sums, so the results, depend on the thread count. One BLAS thread keeps
-// Newton deterministic and no slower on these sizes. This sets OpenBLAS's process-wide thread
-// count, when OpenBLAS is the BLAS in use (found by name, so any other BLAS works unchanged).
+// and make the sums, so the results, depend on the thread count. One BLAS thread keeps Newton
+// deterministic and no slower on these sizes (docs/performance.md). Sets OpenBLAS's
+// process-wide thread count when OpenBLAS is the BLAS in use (any other BLAS works unchanged).
 void single_threaded_blas() {
   static const bool once = [] {
     using SetThreads = void (*)(int);
@@ -33,286 +30,303 @@ void single_threaded_blas() {
   (void)once;
 }
 
-// The Hessian's sparsity is fixed during a solve: it is built once, with, for every element,
-// the positions of its entries in the matrix's value array, so that each assembly only adds
-// numbers (no triplet sorting).
-class HessianAssembler {
- public:
-  HessianAssembler(const Model& model, const std::vector<int>& dof, int ndof) : model_(model) {
-    std::vector<Eigen::Triplet<double>> t;
-    auto visit = [&](auto&& ps, auto&& emit) {
-      for (size_t r = 0; r < 3 * ps.size(); ++r)
-        for (size_t c = 0; c < 3 * ps.size(); ++c) {
-          const int dr = dof[3 * ps[r / 3] + r % 3], dc = dof[3 * ps[c / 3] + c % 3];
-          emit(dr, dc);
-        }
-    };
-    const Springs& s = model.springs;
-    for (int i = 0; i < s.size(); ++i)
-      visit(std::array<int, 2>{s.a[i], s.b[i]}, [&](int dr, int dc) {
-        if (dr >= 0 && dc >= 0) t.emplace_back(dr, dc, 0.0);
-      });
-    const Bending& b = model.bending;
-    for (int e = 0; e < b.size(); ++e)
-      visit(std::array<int, 3>{b.v[e][0], b.v[e][1], b.v[e][2]}, [&](int dr, int dc) {
-        if (dr >= 0 && dc >= 0) t.emplace_back(dr, dc, 0.0);
-      });
-    const Hinges& h = model.hinges;
-    for (int e = 0; e < h.size(); ++e)
-      visit(h.v[e], [&](int dr, int dc) {
-        if (dr >= 0 && dc >= 0) t.emplace_back(dr, dc, 0.0);
-      });
-    for (int k = 0; k < ndof; ++k) t.emplace_back(k, k, 0.0);  // room for the shift
-    h_.resize(ndof, ndof);
-    h_.setFromTriplets(t.begin(), t.end());
-    h_.makeCompressed();
-    auto index = [&](int dr, int dc) {
-      if (dr < 0 || dc < 0) return -1;
-      const int* begin = h_.innerIndexPtr() + h_.outerIndexPtr()[dc];
-      const int* end = h_.innerIndexPtr() + h_.outerIndexPtr()[dc + 1];
-      return static_cast<int>(std::lower_bound(begin, end, dr) - h_.innerIndexPtr());
-    };
-    for (int i = 0; i < s.size(); ++i)
-      visit(std::array<int, 2>{s.a[i], s.b[i]},
-            [&](int dr, int dc) { spring_slots_.push_back(index(dr, dc)); });
-    for (int e = 0; e < b.size(); ++e)
-      visit(std::array<int, 3>{b.v[e][0], b.v[e][1], b.v[e][2]},
-            [&](int dr, int dc) { bend_slots_.push_back(index(dr, dc)); });
-    for (int e = 0; e < h.size(); ++e)
-      visit(h.v[e], [&](int dr, int dc) { hinge_slots_.push_back(index(dr, dc)); });
-    for (int k = 0; k < ndof; ++k) diag_slots_.push_back(index(k, k));
-  }
+using Cholesky = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>;
 
-  // The Hessian of the potential energy at x, plus mu on the diagonal.
-  const Eigen::SparseMatrix<double>& assemble(const Points& x, double mu) {
-    double* val = h_.valuePtr();
-    std::fill(val, val + h_.nonZeros(), 0.0);
-    const Springs& s = model_.springs;
-    for (int i = 0; i < s.size(); ++i) {
-      const Vec3 d = x.col(s.b[i]) - x.col(s.a[i]);
-      const double l = d.norm();
-      if (l <= 0.0) continue;
-      const Vec3 n = d / l;
-      // k [n n^T + (1 - l0/l)(I - n n^T)]: axial stiffness plus the geometric (stress) part,
-      // negative for a compressed spring.
-      const double geo = 1.0 - s.rest_length[i] / l;
-      const Eigen::Matrix3d k =
-          s.stiffness[i] * ((1.0 - geo) * n * n.transpose() + geo * Eigen::Matrix3d::Identity());
-      const int* slot = &spring_slots_[static_cast<size_t>(i) * 36];
-      for (int r = 0; r < 6; ++r)
-        for (int c = 0; c < 6; ++c, ++slot)
-          if (*slot >= 0) val[*slot] += ((r < 3) == (c < 3) ? 1.0 : -1.0) * k(r % 3, c % 3);
-    }
-    const Bending& b = model_.bending;
-    for (int e = 0; e < b.size(); ++e) {
-      const auto& v = b.v[e];
-      add_fd_block<3>(x, v, 1e-6 * (x.col(v[2]) - x.col(v[0])).norm(), 1.0,
-                      &bend_slots_[static_cast<size_t>(e) * 81], val,
-                      [&](const std::array<Vec3, 3>& p) {
-                        return bend_eval(p[0], p[1], p[2], b.stiffness[e]).grad;
-                      });
-    }
-    const Hinges& h = model_.hinges;
-    for (int e = 0; e < h.size(); ++e) {
-      if (h.moment[e] == 0.0) continue;
-      const auto& v = h.v[e];
-      add_fd_block<4>(
-          x, v, 1e-6 * (x.col(v[1]) - x.col(v[0])).norm(), h.moment[e],
-          &hinge_slots_[static_cast<size_t>(e) * 144], val,
-          [](const std::array<Vec3, 4>& p) { return hinge_eval(p[0], p[1], p[2], p[3]).grad; });
-    }
-    for (int k : diag_slots_) val[k] += mu;
-    return h_;
-  }
-
-  // Adds the Hessian of an element over particles v, by central differences of its analytic
-  // gradient `grad` times `scale` (~1e-8 relative accuracy), symmetrized, into the element's
-  // slots.
-  template <int N, typename Grad>
-  static void add_fd_block(const Points& x, const std::array<int, N>& v, double step, double scale,
-                           const int* slot, double* val, Grad grad) {
-    if (!(step > 0.0)) return;
-    std::array<Vec3, N> p;
-    for (int k = 0; k < N; ++k) p[static_cast<size_t>(k)] = x.col(v[static_cast<size_t>(k)]);
-    Eigen::Matrix<double, 3 * N, 3 * N> hb;
-    for (int c = 0; c < 3 * N; ++c) {
-      auto pp = p, pm = p;
-      pp[static_cast<size_t>(c / 3)][c % 3] += step;
-      pm[static_cast<size_t>(c / 3)][c % 3] -= step;
-      const std::array<Vec3, N> gp = grad(pp), gm = grad(pm);
-      for (int r = 0; r < 3 * N; ++r)
-        hb(r, c) = scale *
-                   (gp[static_cast<size_t>(r / 3)][r % 3] - gm[static_cast<size_t>(r / 3)][r % 3]) /
-                   (2 * step);
-    }
-    for (int r = 0; r < 3 * N; ++r)
-      for (int c = 0; c < 3 * N; ++c, ++slot)
-        if (*slot >= 0) val[*slot] += 0.5 * (hb(r, c) + hb(c, r));
-  }
-
-  // Adds delta to the diagonal of the last assembled matrix.
-  const Eigen::SparseMatrix<double>& shift(double delta) {
-    for (int k : diag_slots_) h_.valuePtr()[k] += delta;
-    return h_;
-  }
-
-  // Largest diagonal entry, the scale of the shift.
-  double scale() const { return h_.diagonal().cwiseAbs().maxCoeff(); }
-
- private:
-  const Model& model_;
-  Eigen::SparseMatrix<double> h_;
-  std::vector<int> spring_slots_, bend_slots_, hinge_slots_, diag_slots_;
-};
-
-// Six coordinates (3 p + axis) fixing translation and rotation: all of particle a, y and z of b,
-// z of c, for a, b, c spread over the sheet and not collinear.
-std::vector<int> rigid_gauge(const Points& x) {
-  const Vec3 centre = x.rowwise().mean();
-  int a = 0, b = 0, c = 0;
-  double best_a = 1e300, best_b = -1.0, best_c = -1.0;
-  for (Eigen::Index p = 0; p < x.cols(); ++p) {
-    const double d = (x.col(p) - centre).squaredNorm();
-    if (d < best_a) best_a = d, a = static_cast<int>(p);
-  }
-  for (Eigen::Index p = 0; p < x.cols(); ++p) {
-    const double d = (x.col(p) - x.col(a)).squaredNorm();
-    if (d > best_b) best_b = d, b = static_cast<int>(p);
-  }
-  const Vec3 ab = (x.col(b) - x.col(a)).normalized();
-  for (Eigen::Index p = 0; p < x.cols(); ++p) {
-    const double d = (x.col(p) - x.col(a)).cross(ab).squaredNorm();
-    if (d > best_c) best_c = d, c = static_cast<int>(p);
-  }
-  return {3 * a, 3 * a + 1, 3 * a + 2, 3 * b + 1, 3 * b + 2, 3 * c + 2};
-}
-
-}  // namespace
-
-Eigen::SparseMatrix<double> potential_hessian(const Model& model, const Points& x) {
-  std::vector<int> dof(static_cast<size_t>(x.size()));
-  for (size_t k = 0; k < dof.size(); ++k) dof[k] = static_cast<int>(k);
-  HessianAssembler assembler(model, dof, static_cast<int>(dof.size()));
-  return assembler.assemble(x, 0.0);
-}
-
-namespace {
-
-// Numbers the free coordinates into `dof` (-1: held) and returns how many there are. A sheet
-// with no pins can move rigidly: its Hessian has six zero eigenvalues. Holding six coordinates
-// of three particles (the gauge) removes them without changing the equilibrium, since nothing
-// else holds the sheet.
-int number_dofs(const Model& model, const Points& x, std::vector<int>& dof) {
+// Numbers the free coordinates into `dof` (-1: pinned, held by the gauge, or a z coordinate of a
+// plane-stress solve) and returns how many there are.
+int number_dofs(const Model& model, const std::array<int, 6>* gauge, bool in_plane,
+                std::vector<int>& dof) {
   const int n = model.num_particles();
-  bool any_pinned = false;
-  for (int p = 0; p < n; ++p) any_pinned = any_pinned || model.pinned(p);
   dof.assign(static_cast<size_t>(3 * n), 0);
-  for (int p = 0; p < n; ++p)
+  for (int p = 0; p < n; ++p) {
     if (model.pinned(p)) dof[3 * p] = dof[3 * p + 1] = dof[3 * p + 2] = -1;
-  if (!any_pinned && n >= 3)
-    for (int k : rigid_gauge(x)) dof[k] = -1;
+    if (in_plane) dof[3 * p + 2] = -1;
+  }
+  if (gauge)
+    for (int k : *gauge) dof[static_cast<size_t>(k)] = -1;
   int ndof = 0;
   for (int& d : dof)
     if (d >= 0) d = ndof++;
   return ndof;
 }
 
-// Backtracking (Armijo) on the energy along d from x; near convergence the energy change drowns
-// in round-off, so a step that lowers the residual (r.residual) is accepted too. Moves x, f and
-// energy and returns true when a step is taken.
-bool line_search(const Model& model, const std::vector<int>& dof, const Eigen::VectorXd& d,
-                 double slope, Points& x, Points& f, double& energy, SolveReport& r) {
-  const int n = model.num_particles();
+// One solve: the state of Newton's iteration and its kinds of step.
+class Newton {
+ public:
+  Newton(const Model& model, Points& x, const std::vector<int>& dof, int ndof,
+         const NewtonOptions& o, SolveReport& r)
+      : model_(model),
+        x_(x),
+        dof_(dof),
+        ndof_(ndof),
+        o_(o),
+        r_(r),
+        exact_(model, dof, ndof),
+        projected_(model, dof, ndof) {
+    llt_.cholmod().print = 0;  // "not positive definite" is an expected answer here
+    double sum = 0.0;
+    for (double l : model.springs.rest_length) sum += l;
+    length_ = model.springs.size() > 0 ? sum / model.springs.size() : 1.0;
+  }
+
+  void run(const Stopwatch& clock);
+
+ private:
+  bool exact_step();
+  bool factor_projected();
+  bool negative_curvature(Eigen::VectorXd& v, double& curvature);
+  bool indefinite_step();
+  bool exact_is_positive_definite();
+  bool factorize(const Eigen::SparseMatrix<double>& a);
+  bool line_search(const Eigen::VectorXd& d, double slope, double curvature);
+  Eigen::VectorXd gradient() const;
+  Points moved(const Eigen::VectorXd& d, double alpha) const;
+  void evaluate();
+
+  const Model& model_;
+  Points& x_;
+  const std::vector<int>& dof_;
+  int ndof_;
+  const NewtonOptions& o_;
+  SolveReport& r_;
+  HessianAssembler exact_, projected_;
+  Cholesky llt_;
+  bool analysed_ = false;
+  Points f_;
+  double energy_ = 0.0;
+  double mu_ = 1e-8;       // shift of the projected matrix, in units of its diagonal
+  double length_ = 1.0;    // m, mean spring rest length: the scale of a saddle escape
+  bool try_exact_ = true;  // the last steps suggest the Hessian is positive definite
+  double last_alpha_ = 0.0;
+  Eigen::VectorXd nc_;  // the last direction of negative curvature (power iteration's start)
+};
+
+void Newton::evaluate() {
+  compute_static_forces(model_, x_, f_);
+  ++r_.force_passes;
+  energy_ = potential_energy(model_, x_);
+  r_.residual = max_free_force(model_, f_);
+  r_.residual_relative = r_.residual / o_.force_scale;
+}
+
+Eigen::VectorXd Newton::gradient() const {
+  Eigen::VectorXd g(ndof_);
+  for (size_t k = 0; k < dof_.size(); ++k)
+    if (dof_[k] >= 0) g[dof_[k]] = -f_.data()[k];
+  return g;
+}
+
+Points Newton::moved(const Eigen::VectorXd& d, double alpha) const {
+  Points xt = x_;
+  for (size_t k = 0; k < dof_.size(); ++k)
+    if (dof_[k] >= 0) xt.data()[k] += alpha * d[dof_[k]];
+  return xt;
+}
+
+bool Newton::factorize(const Eigen::SparseMatrix<double>& a) {
+  // Debian's CHOLMOD opens OpenMP regions of a fixed 4 threads inside the supernodal
+  // factorization, whatever OMP_NUM_THREADS says; on 2 cores their sleeping and waking cost 5x
+  // the factorization itself (measured). No active parallel levels make them run on this thread.
+  const int levels = omp_get_max_active_levels();
+  omp_set_max_active_levels(0);
+  if (!analysed_) llt_.analyzePattern(a), analysed_ = true;
+  llt_.factorize(a);
+  omp_set_max_active_levels(levels);
+  ++r_.factorizations;
+  return llt_.info() == Eigen::Success;
+}
+
+// Backtracking on the energy along d: alpha is accepted when the energy falls by at least 1e-4
+// of what the local model promises (slope alpha + curvature alpha^2 / 2; the curvature term only
+// for negative-curvature steps). Near convergence the change drowns in round-off, so a step that
+// lowers the residual is accepted too.
+bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvature) {
   double alpha = 1.0;
-  for (int ls = 0; ls < 30; ++ls, alpha *= 0.5) {
-    Points xt = x;
-    for (int k = 0; k < 3 * n; ++k)
-      if (dof[k] >= 0) xt.data()[k] += alpha * d[dof[k]];
-    const double et = potential_energy(model, xt);
-    Points ft;
-    compute_static_forces(model, xt, ft);
-    ++r.force_passes;
-    const bool armijo = et <= energy + 1e-4 * alpha * slope;
-    const bool roundoff =
-        std::abs(et - energy) <= 1e-12 * std::abs(energy) && max_free_force(model, ft) < r.residual;
-    if (std::isfinite(et) && (armijo || roundoff)) {
-      x = std::move(xt);
-      f = std::move(ft);
-      energy = et;
+  for (int k = 0; k < 40; ++k, alpha *= 0.5) {
+    Points xt = moved(d, alpha);
+    const double et = potential_energy(model_, xt);
+    if (!std::isfinite(et)) continue;
+    const double promised = alpha * slope + 0.5 * alpha * alpha * std::min(curvature, 0.0);
+    bool accept = et <= energy_ + 1e-4 * promised;
+    if (!accept && std::abs(et - energy_) <= 1e-12 * std::abs(energy_)) {
+      Points ft;
+      compute_static_forces(model_, xt, ft);
+      ++r_.force_passes;
+      accept = max_free_force(model_, ft) < r_.residual;
+    }
+    if (!accept) continue;
+    x_ = std::move(xt);
+    evaluate();
+    last_alpha_ = alpha;
+    return true;
+  }
+  return false;
+}
+
+// Factorizes the exact Hessian plus a shift of 1e-10 of its diagonal (the gauge has removed the
+// rigid motions; the shift only keeps floppy but stable modes factorizable): success means the
+// energy is convex here, a minimum if the forces vanish.
+bool Newton::exact_is_positive_definite() {
+  exact_.assemble(x_, false);
+  const Eigen::VectorXd diag = exact_.diagonal().cwiseAbs();
+  const double floor = 1e-12 * (diag.size() ? diag.maxCoeff() : 1.0);
+  exact_.add_to_diagonal((1e-10 * diag).array() + floor);
+  return factorize(exact_.lower());
+}
+
+bool Newton::exact_step() {
+  if (!exact_is_positive_definite()) return false;
+  const Eigen::VectorXd g = gradient();
+  const Eigen::VectorXd d = llt_.solve(-g);
+  const double slope = g.dot(d);
+  return slope < 0.0 && line_search(d, slope, 0.0);
+}
+
+// Factorizes the projected Hessian at x plus mu times its diagonal, growing mu (remembered
+// across iterations) until the factorization succeeds.
+bool Newton::factor_projected() {
+  projected_.assemble(x_, true);
+  const Eigen::VectorXd diag = projected_.diagonal().cwiseAbs();
+  const double floor = 1e-12 * (diag.size() ? diag.maxCoeff() : 1.0);
+  double applied = 0.0;
+  for (int attempt = 0; attempt < 20; ++attempt, mu_ *= 10.0) {
+    projected_.add_to_diagonal(((mu_ - applied) * diag).array() + (applied == 0.0 ? floor : 0.0));
+    applied = mu_;
+    if (factorize(projected_.lower())) return true;
+  }
+  return false;
+}
+
+// With the projected matrix A factored at x: power iteration on I - A^-1 H, whose eigenvalues
+// above 1 belong to directions of negative curvature of the energy, finds the most negative one
+// in A's metric (warm-started from the last one found, so a few iterations suffice). Returns
+// false when the energy has no negative curvature there. The direction is scaled to move no
+// particle by more than a mean spring length and turned downhill, or (at an exact saddle) to
+// continue the sheet's present out-of-plane displacement, so the side is the seeded
+// perturbation's (resin_side).
+bool Newton::negative_curvature(Eigen::VectorXd& v, double& curvature) {
+  exact_.assemble(x_, false);
+  if (nc_.size() != ndof_) {
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    nc_.resize(ndof_);
+    for (Eigen::Index k = 0; k < ndof_; ++k) nc_[k] = u(rng);
+  }
+  v = nc_;
+  for (int it = 0; it < 8; ++it) {
+    v = llt_.solve(projected_.multiply(v) - exact_.multiply(v));
+    v /= v.norm();
+  }
+  nc_ = v;
+  const Points dv = moved(v, 1.0) - x_;
+  const double largest = dv.colwise().norm().maxCoeff();
+  if (!(v.dot(exact_.multiply(v)) < 0.0) || !(largest > 0.0)) return false;
+  v *= length_ / largest;
+  const Eigen::VectorXd g = gradient();
+  const double slope = g.dot(v);
+  if (std::abs(slope) <= 1e-12 * g.norm() * v.norm()) {
+    const Eigen::VectorXd height = x_.row(2).transpose().array() - x_.row(2).mean();
+    if (dv.row(2).transpose().dot(height) < 0.0) v = -v;
+  } else if (slope > 0.0) {
+    v = -v;
+  }
+  curvature = v.dot(exact_.multiply(v));
+  return true;
+}
+
+// The better of the projected Newton step and a step along negative curvature, judged by the
+// energy decrease each promises (-g.d/2 for the Newton step of the convex model; -(g.v + v.Hv/2)
+// along negative curvature, where the quadratic model has no minimum).
+bool Newton::indefinite_step() {
+  const Eigen::VectorXd g = gradient();
+  const Eigen::VectorXd d = llt_.solve(-g);
+  const double slope = g.dot(d);
+  Eigen::VectorXd v;
+  double curvature = 0.0;
+  const bool has_nc = negative_curvature(v, curvature);
+  const double promised_nc = has_nc ? -(g.dot(v) + 0.5 * curvature) : 0.0;
+  if (has_nc && (promised_nc > -0.5 * slope || !(slope < 0.0))) {
+    if (line_search(v, g.dot(v), curvature)) {
+      ++r_.negative_curvature_steps;
       return true;
     }
   }
+  if (slope < 0.0 && line_search(d, slope, 0.0)) {
+    if (last_alpha_ == 1.0) mu_ = std::max(0.25 * mu_, 1e-8);
+    if (last_alpha_ < 0.25) mu_ *= 4.0;
+    return true;
+  }
   return false;
+}
+
+void Newton::run(const Stopwatch& clock) {
+  evaluate();
+  bool exact_recent = false;  // the last step was a Newton step on a positive definite Hessian
+  for (long it = 0;; ++it) {
+    if (!std::isfinite(r_.residual) || !std::isfinite(energy_)) {
+      r_.diverged = true;
+      r_.message = "newton diverged at iteration " + std::to_string(it) +
+                   ": forces became NaN/Inf. Try more increments or the static solver.";
+      return;
+    }
+    if (o_.progress)
+      o_.progress({"", it, o_.max_iterations, r_.residual_relative, clock.seconds()});
+    if (r_.residual_relative <= o_.tolerance) {
+      if (exact_recent || exact_is_positive_definite()) {
+        r_.converged = true;
+        return;
+      }
+      // Forces vanish but the energy is not convex: a saddle. Leave it downhill.
+      if (it >= o_.max_iterations || !(factor_projected() && indefinite_step())) {
+        r_.saddle = true;
+        r_.message =
+            "newton: stopped at a saddle of the energy (no descent along negative "
+            "curvature found); try another perturbation seed or more increments";
+        return;
+      }
+      exact_recent = false;
+      ++r_.iterations;
+      continue;
+    }
+    if (it >= o_.max_iterations || ndof_ == 0) return;
+    if (o_.max_seconds > 0.0 && clock.seconds() > o_.max_seconds) return;
+    ++r_.iterations;
+    exact_recent = try_exact_ && exact_step();
+    if (exact_recent) continue;
+    try_exact_ = false;
+    const bool stepped = factor_projected() && indefinite_step();
+    if (!stepped) {
+      r_.message = "newton: no downhill step found at iteration " + std::to_string(it);
+      return;
+    }
+    if (last_alpha_ == 1.0) try_exact_ = true;
+  }
 }
 
 }  // namespace
 
 SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& o) {
   const Stopwatch clock;
-  auto seconds = [&] { return clock.seconds(); };
-  const int n = model.num_particles();
-  Points& x = state.x;
-  std::vector<int> dof;
-  const int ndof = number_dofs(model, x, dof);
-
-  Points f;
-  SolveReport r;
-  auto residual = [&](const Points& forces) { return max_free_force(model, forces); };
-  compute_static_forces(model, x, f);
-  ++r.force_passes;
-  double energy = potential_energy(model, x);
-  double mu = 0.0;  // Levenberg-Marquardt shift, grown when the factorization or the search fails
-  // Supernodal Cholesky: fails (info != Success) exactly when the matrix is not positive definite.
   single_threaded_blas();
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> ldlt;
-  ldlt.cholmod().print = 0;  // "not positive definite" is an expected answer here, not news
-  HessianAssembler assembler(model, dof, ndof);
-  bool pattern_known = false;
-
-  for (long it = 0;; ++it) {
-    r.residual = residual(f);
-    r.residual_relative = r.residual / o.force_scale;
-    if (!std::isfinite(r.residual)) {
-      r.diverged = true;
-      r.message = "newton diverged at iteration " + std::to_string(it) +
-                  ": forces became NaN/Inf. Try the static solver (the default).";
-      break;
-    }
-    if (o.progress) o.progress({"", it, o.max_iterations, r.residual_relative, seconds()});
-    if (r.residual_relative <= o.tolerance || it >= o.max_iterations || ndof == 0) break;
-    if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
-
-    assembler.assemble(x, 0.0);
-    double shifted = 0.0;
-    Eigen::VectorXd g(ndof);  // energy gradient = -force
-    for (int k = 0; k < 3 * n; ++k)
-      if (dof[k] >= 0) g[dof[k]] = -f.data()[k];
-    const double scale = assembler.scale();
-    mu = mu * 0.25 < 1e-12 * scale ? 0.0 : mu * 0.25;  // trust the model more after success
-    ++r.iterations;
-
-    bool stepped = false;
-    for (int attempt = 0; attempt < 40 && !stepped; ++attempt) {
-      if (attempt > 0) mu = std::max(4.0 * mu, 1e-12 * scale);  // shift more after a failure
-      const Eigen::SparseMatrix<double>& a = assembler.shift(mu - shifted);
-      shifted = mu;
-      if (!pattern_known) ldlt.analyzePattern(a), pattern_known = true;
-      ldlt.factorize(a);
-      // Only a positive definite system gives a downhill Newton step: otherwise shift more.
-      if (ldlt.info() != Eigen::Success) continue;
-      const Eigen::VectorXd d = ldlt.solve(-g);
-      const double slope = g.dot(d);
-      if (!(slope < 0.0)) continue;
-      stepped = line_search(model, dof, d, slope, x, f, energy, r);
-    }
-    if (!stepped) {
-      r.message = "newton: no downhill step found at iteration " + std::to_string(it);
-      break;
-    }
-  }
-  r.converged = r.residual_relative <= o.tolerance;
+  SolveReport r;
+  const int n = model.num_particles();
+  bool any_pinned = false;
+  for (int p = 0; p < n; ++p) any_pinned = any_pinned || model.pinned(p);
+  // A free sheet is solved in the gauge's frame (rigid_gauge.hpp) and turned back after.
+  const bool gauged = !any_pinned && n >= 3;
+  const RigidGauge gauge = gauged ? rigid_gauge(state.x) : RigidGauge{};
+  Model turned;
+  const bool turn_gravity = gauged && model.gravity != Vec3::Zero();
+  if (turn_gravity) turned = model, turned.gravity = gauge.rotation * model.gravity;
+  const Model& m = turn_gravity ? turned : model;
+  Points x = gauged ? Points(gauge.rotation * state.x) : state.x;
+  std::vector<int> dof;
+  const int ndof = number_dofs(m, gauged ? &gauge.held : nullptr, o.in_plane, dof);
+  Newton newton(m, x, dof, ndof, o, r);
+  newton.run(clock);
+  state.x = gauged ? Points(gauge.rotation.transpose() * x) : x;
   state.v.setZero(3, n);
-  r.wall_seconds = seconds();
+  r.wall_seconds = clock.seconds();
   if (r.message.empty() || r.converged) r.message = summary_message("newton", r, o.tolerance);
   return r;
 }

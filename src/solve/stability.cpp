@@ -3,7 +3,7 @@
 #include <Eigen/CholmodSupport>
 #include <sstream>
 
-#include "membra/solve/newton_solver.hpp"
+#include "membra/solve/hessian_assembler.hpp"
 #include "membra/solve/solve_report.hpp"
 
 namespace membra {

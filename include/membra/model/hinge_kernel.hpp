@@ -11,6 +11,9 @@
 
 #include "membra/core/vec.hpp"
 
+#include <unsupported/Eigen/AutoDiff>
+#include "membra/model/psd_projection.hpp"
+
 namespace membra {
 
 struct HingeEval {
@@ -37,6 +40,54 @@ inline HingeEval hinge_eval(const Vec3& x0, const Vec3& x1, const Vec3& x2, cons
   r.grad[2] = g2;
   r.grad[3] = g3;
   return r;
+}
+
+// The gradient of theta above, over any scalar type (double, or a forward-mode dual number for
+// the Hessian): the 12 entries (d theta / d x0, ..., d theta / d x3). Zero where hinge_eval's is.
+template <typename T>
+std::array<Eigen::Matrix<T, 3, 1>, 4> hinge_theta_gradient(
+    const std::array<Eigen::Matrix<T, 3, 1>, 4>& x) {
+  using V = Eigen::Matrix<T, 3, 1>;
+  const V e = x[1] - x[0];
+  const V n1 = e.cross(x[2] - x[0]);
+  const V n2 = (x[0] - x[1]).cross(x[3] - x[1]);
+  const T ee = e.squaredNorm(), a1 = n1.squaredNorm(), a2 = n2.squaredNorm();
+  std::array<V, 4> g;
+  if (ee <= 0.0 || a1 <= 0.0 || a2 <= 0.0) {
+    for (auto& gi : g) gi.setZero();
+    return g;
+  }
+  using std::sqrt;
+  const T le = sqrt(ee);
+  const V g2 = (le / a1) * n1, g3 = (le / a2) * n2;
+  const T t2 = (x[2] - x[0]).dot(e) / ee, t3 = (x[3] - x[0]).dot(e) / ee;
+  g[0] = -(T(1.0) - t2) * g2 - (T(1.0) - t3) * g3;
+  g[1] = -t2 * g2 - t3 * g3;
+  g[2] = g2;
+  g[3] = g3;
+  return g;
+}
+
+// Hessian of theta over (x0, x1, x2, x3), 12 x 12, 1/m^2: the exact derivative of the analytic
+// gradient above, taken in one forward-mode pass with 12-component dual numbers (no
+// differencing step, so exact to round-off), times `moment` (so the Hessian of the hinge's
+// energy), symmetrized; with `project` the closest positive semi-definite matrix.
+using HingeHessian = Eigen::Matrix<double, 12, 12>;
+inline HingeHessian hinge_hessian(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
+                                  double moment, bool project = false) {
+  using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, 12, 1>>;
+  using V = Eigen::Matrix<Dual, 3, 1>;
+  const std::array<const Vec3*, 4> p = {&x0, &x1, &x2, &x3};
+  std::array<V, 4> x;
+  for (int k = 0; k < 4; ++k)
+    for (int c = 0; c < 3; ++c)
+      x[static_cast<size_t>(k)][c] = Dual((*p[static_cast<size_t>(k)])[c], 12, 3 * k + c);
+  const std::array<V, 4> g = hinge_theta_gradient(x);
+  HingeHessian h;
+  for (int r = 0; r < 12; ++r)
+    h.row(r) = g[static_cast<size_t>(r / 3)][r % 3].derivatives().transpose();
+  const HingeHessian sym = (0.5 * moment) * (h + h.transpose());  // not in place: aliasing
+  return project ? project_psd(sym) : sym;
 }
 
 }  // namespace membra

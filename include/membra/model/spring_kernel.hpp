@@ -34,4 +34,19 @@ inline Vec3 spring_static_force_on_a(const Vec3& xa, const Vec3& xb, double l0, 
   return (k * (1.0 - l0 / l)) * d;
 }
 
+// Hessian block K of a spring's energy (3 x 3, N/m): d^2E/dxa^2 = d^2E/dxb^2 = K and
+// d^2E/dxa dxb = -K, with K = k [n n^T + g (I - n n^T)], n the unit vector a -> b and
+// g = 1 - l0/l the geometric (stress) part, negative when the spring is compressed. With
+// `project` g is clamped at zero: the closest positive semi-definite element Hessian.
+inline Eigen::Matrix3d spring_hessian_block(const Vec3& xa, const Vec3& xb, double l0, double k,
+                                            bool project = false) {
+  const Vec3 d = xb - xa;
+  const double l = d.norm();
+  if (l <= 0.0) return Eigen::Matrix3d::Zero();
+  const Vec3 n = d / l;
+  double g = 1.0 - l0 / l;
+  if (project && g < 0.0) g = 0.0;
+  return k * ((1.0 - g) * n * n.transpose() + g * Eigen::Matrix3d::Identity());
+}
+
 }  // namespace membra

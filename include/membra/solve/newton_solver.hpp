@@ -1,15 +1,20 @@
 #pragma once
-// Static equilibrium by Newton's method with a Levenberg-Marquardt shift: the exact Hessian
-// (springs analytic, bending by differences of the analytic gradient) plus mu I, with mu grown
-// until a sparse Cholesky factorization (CHOLMOD) succeeds, i.e. the system is positive
-// definite, and shrunk after each accepted step; a backtracking line search on the energy keeps
-// every step downhill. A sheet with no pins has six coordinates held to remove its rigid
-// motions. Experimental: fast on exp2, stalls on exp3 (docs/process.md).
+// Static equilibrium by Newton's method on the exact, analytically assembled Hessian
+// (hessian_assembler.hpp) with sparse Cholesky (CHOLMOD, symbolic analysis done once per solve):
+//  - where the Hessian is positive definite, the plain Newton step (quadratic convergence);
+//  - where it is indefinite (a compressed sheet before it buckles), the projected Hessian (each
+//    element's Hessian made positive semi-definite) plus a shift in the stiffness-diagonal
+//    metric whose size is remembered across iterations;
+//  - at a saddle (small forces, indefinite Hessian), a step along the direction of most negative
+//    curvature, found by power iteration with the factored projected matrix;
+//  - an energy line search on every step.
+// An end state counts as converged only when the forces are small and the exact Hessian is
+// positive definite, so a saddle is never reported as an equilibrium. A sheet with no pins is
+// held by a gauge that removes exactly its rigid motions (rigid_gauge.hpp). docs/solver.md.
 #include <functional>
 
-#include <Eigen/SparseCore>
-
 #include "membra/model/model.hpp"
+#include "membra/solve/hessian_assembler.hpp"
 #include "membra/solve/solve_report.hpp"
 
 namespace membra {
@@ -19,11 +24,11 @@ struct NewtonOptions {
   double force_scale = 1.0;  // N
   long max_iterations = 500;
   double max_seconds = 0.0;  // wall-time budget (0: none)
+  // Plane stress: every z coordinate held (for a sheet lying in the xy plane), so a compressed
+  // region cannot buckle; the in-plane stress problems of the tests and the measures use it.
+  bool in_plane = false;
   std::function<void(const Progress&)> progress;
 };
-
-// Hessian of the potential energy at x over all 3N coordinates (pins ignored), N/m.
-Eigen::SparseMatrix<double> potential_hessian(const Model& model, const Points& x);
 
 // Moves the free particles of `state` to a nearby stable equilibrium (velocities set to zero).
 // Never throws on failure: the report says what happened.

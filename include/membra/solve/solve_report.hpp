@@ -9,13 +9,16 @@
 namespace membra {
 
 struct SolveReport {
-  bool converged = false;          // residual_relative <= tolerance at the end
-  bool diverged = false;           // stopped on NaN/Inf or blow-up; the state is not usable
-  std::string message;             // why it stopped, and what to try if it failed
-  double residual = 0.0;           // max |static force| over free particles at the end, N
-  double residual_relative = 0.0;  // residual / force scale (k_stretch x grid spacing)
-  long iterations = 0;             // time steps or solver iterations taken
-  long force_passes = 0;           // full force evaluations
+  bool converged = false;             // residual_relative <= tolerance at the end
+  bool diverged = false;              // stopped on NaN/Inf or blow-up; the state is not usable
+  std::string message;                // why it stopped, and what to try if it failed
+  double residual = 0.0;              // max |static force| over free particles at the end, N
+  double residual_relative = 0.0;     // residual / force scale (k_stretch x grid spacing)
+  long iterations = 0;                // time steps or solver iterations taken
+  long force_passes = 0;              // full force evaluations
+  long factorizations = 0;            // newton: sparse Cholesky factorizations
+  long negative_curvature_steps = 0;  // newton: steps taken along negative curvature (saddles)
+  bool saddle = false;  // newton: stopped at a point where the energy is not a minimum
   double wall_seconds = 0.0;
 };
 

@@ -1,0 +1,23 @@
+#pragma once
+// A sheet held by nothing can move rigidly: its energy's Hessian has six zero eigenvalues, and
+// Newton's linear systems are singular. The gauge removes exactly these six motions, whatever
+// the sheet's orientation: three particles a (near the centre), b (far from a) and c (far from
+// the line ab) define a frame with ab along its x axis and abc in its xy plane; in that frame,
+// holding all of a, y and z of b, and z of c leaves every form reachable (rotate it so that b
+// lies on a's x line and c in a's xy plane) and fixes nothing else. Holding b's y and z in the
+// sheet's own axes would forbid ab from shortening unless ab ran along x (docs/solver.md).
+#include <array>
+
+#include "membra/core/vec.hpp"
+
+namespace membra {
+
+struct RigidGauge {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // sheet axes -> gauge frame
+  std::array<int, 6> held{};  // coordinate numbers 3 p + c (in the gauge frame) to hold
+};
+
+// The gauge for positions x (at least three particles, not all on one line).
+RigidGauge rigid_gauge(const Points& x);
+
+}  // namespace membra
