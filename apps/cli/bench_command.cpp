@@ -7,7 +7,9 @@
 #include <iostream>
 
 #include "membra/io/bench_report.hpp"
+#include "membra/io/scene.hpp"
 #include "membra/process/bench.hpp"
+#include "membra/process/scene_bench.hpp"
 
 namespace membra::cli {
 namespace {
@@ -37,6 +39,40 @@ void print_table(const std::vector<BenchRow>& rows, const BenchOptions& o) {
                 r.report.diverged ? "  DIVERGED" : (r.report.converged ? "" : "  (budget)"));
 }
 
+// Every scene file at every size with every solver, one line logged per run.
+std::vector<SceneBenchRow> run_scene_bench(const BenchArgs& args) {
+  std::vector<SceneBenchRow> rows;
+  for (const std::string& file : args.scene_files)
+    for (int n : args.scene_sizes) {
+      const std::string res =
+          "sheet.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]";
+      const Scene scene = load_scene(file, {res});
+      for (const std::string& name : args.scene_solvers) {
+        const auto solver = solver_from_name(name);
+        if (!solver || !solver_info(*solver).equilibrium)
+          throw std::invalid_argument("--scene-solvers: '" + name + "' is no equilibrium solver");
+        rows.push_back(bench_scene(scene, *solver, args.budget));
+        const SceneBenchRow& r = rows.back();
+        if (!args.quiet)
+          std::cerr << r.scene << " " << n << " " << name << ": " << r.report.wall_seconds << " s"
+                    << (r.over_budget ? " (budget)" : "") << "\n";
+      }
+    }
+  return rows;
+}
+
+void print_scene_table(const std::vector<SceneBenchRow>& rows, double budget) {
+  std::printf("\nscenes, full runs, budget %.0f s per run\n", budget);
+  std::printf("%-22s %5s %-7s %8s %8s %7s %5s %6s %9s %10s %7s\n", "scene", "n", "solver", "wall s",
+              "iters", "factor", "incr", "conv", "resid", "height mm", "total K");
+  for (const auto& r : rows)
+    std::printf("%-22s %5d %-7s %8.2f %8ld %7ld %5d %6s %9.1e %10.2f %7.3f%s\n", r.scene.c_str(),
+                r.n, r.solver.c_str(), r.report.wall_seconds, r.report.iterations,
+                r.report.factorizations, r.increments, r.report.converged ? "yes" : "no",
+                r.report.residual_relative, r.height * 1e3, r.total_curvature,
+                r.over_budget ? "  (budget)" : (r.stable ? "" : "  (saddle)"));
+}
+
 }  // namespace
 
 int cmd_bench(const BenchArgs& args) {
@@ -46,8 +82,11 @@ int cmd_bench(const BenchArgs& args) {
   o.budget = args.budget;
   if (!args.quiet) o.log = [](const std::string& line) { std::cerr << line << "\n"; };
   const std::vector<BenchRow> rows = run_bench(o);
+  const std::vector<SceneBenchRow> scene_rows =
+      args.scenes ? run_scene_bench(args) : std::vector<SceneBenchRow>{};
   if (args.json || !args.json_out.empty()) {
-    const nlohmann::json j = bench_report(rows, o, omp_get_max_threads());
+    nlohmann::json j = bench_report(rows, o, omp_get_max_threads());
+    if (args.scenes) j["scenes"] = scene_bench_report(scene_rows);
     if (!args.json_out.empty()) {
       std::ofstream out(args.json_out);
       out << j.dump(2) << "\n";
@@ -62,6 +101,7 @@ int cmd_bench(const BenchArgs& args) {
     }
   }
   print_table(rows, o);
+  if (args.scenes) print_scene_table(scene_rows, args.budget);
   return 0;
 }
 

@@ -14,6 +14,13 @@ struct BenchArgs {
   bool json = false;
   std::string json_out;  // also write the JSON here, with the table on stdout
   bool quiet = false;
+  // --scenes: also the forward examples at scene_sizes with the equilibrium solvers.
+  bool scenes = false;
+  std::vector<int> scene_sizes{64, 128};
+  std::vector<std::string> scene_solvers{"static", "newton"};
+  std::vector<std::string> scene_files{"examples/exp3_parallel.json",
+                                       "examples/synclastic_ellipse.json",
+                                       "examples/anticlastic_hyperbola.json"};
 };
 
 int cmd_bench(const BenchArgs& args);

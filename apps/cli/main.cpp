@@ -162,6 +162,18 @@ CLI::App* add_bench(CLI::App& app, Args& a) {
   bench->add_flag("--json", a.bench.json, "Machine-readable output on stdout");
   bench->add_option("--json-out", a.bench.json_out, "Also write the JSON to this file");
   bench->add_flag("--quiet,-q", a.bench.quiet, "No per-run log on stderr");
+  bench->add_flag("--scenes", a.bench.scenes,
+                  "Also run the forward examples (exp3_parallel, synclastic_ellipse, "
+                  "anticlastic_hyperbola; from the repository root) with each equilibrium solver");
+  bench->add_option("--scene-sizes", a.bench.scene_sizes, "Resolutions n of the scenes (n x n)")
+      ->delimiter(',')
+      ->check(CLI::Range(3, 4096))
+      ->capture_default_str();
+  bench->add_option("--scene-solvers", a.bench.scene_solvers, "Equilibrium solvers for the scenes")
+      ->delimiter(',')
+      ->capture_default_str();
+  bench->add_option("--scene-files", a.bench.scene_files, "Scene files for --scenes")
+      ->delimiter(',');
   return bench;
 }
 

@@ -38,4 +38,24 @@ nlohmann::json bench_report(const std::vector<BenchRow>& rows, const BenchOption
   return j;
 }
 
+nlohmann::json scene_bench_report(const std::vector<SceneBenchRow>& rows) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& r : rows)
+    a.push_back({{"scene", r.scene},
+                 {"n", r.n},
+                 {"solver", r.solver},
+                 {"converged", r.report.converged},
+                 {"over_budget", r.over_budget},
+                 {"stable", r.stable},
+                 {"wall_seconds", r.report.wall_seconds},
+                 {"iterations", r.report.iterations},
+                 {"factorizations", r.report.factorizations},
+                 {"negative_curvature_steps", r.report.negative_curvature_steps},
+                 {"increments", r.increments},
+                 {"residual_relative", r.report.residual_relative},
+                 {"height_mm", r.height * 1e3},
+                 {"total_curvature_rad", r.total_curvature}});
+  return a;
+}
+
 }  // namespace membra

@@ -47,6 +47,9 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
 void accumulate(SolveReport& total, const SolveReport& r) {
   total.iterations += r.iterations;
   total.force_passes += r.force_passes;
+  total.factorizations += r.factorizations;
+  total.negative_curvature_steps += r.negative_curvature_steps;
+  total.saddle = r.saddle;
   total.wall_seconds += r.wall_seconds;
   total.residual = r.residual;
   total.residual_relative = r.residual_relative;

@@ -236,6 +236,50 @@ TEST(CliBench, RunsTheSolversSideBySideOnPn) {
   EXPECT_NE(bad.text.find("unknown solver 'foo'"), std::string::npos) << bad.text;
 }
 
+// --scenes: the forward examples run in full with each equilibrium solver, side by side.
+TEST(CliBench, ScenesRunTheExamplesWithEachEquilibriumSolver) {
+  const fs::path dir = unique_temp_dir();
+  fs::create_directories(dir);
+  const fs::path out = dir / "bench.json";
+  const Output o = membra_cli(
+      "bench --sizes 8 --solvers static --scenes --scene-sizes 11 "
+      "--scene-files " +
+      std::string(MEMBRA_SOURCE_DIR) +
+      "/examples/anticlastic_hyperbola.json --budget 120 -q --json-out " + out.string());
+  ASSERT_EQ(o.code, 0) << o.text;
+  EXPECT_NE(o.text.find("anticlastic_hyperbola"), std::string::npos) << o.text;  // the table
+  std::ifstream in(out);
+  const json j = json::parse(in);
+  ASSERT_EQ(j["scenes"].size(), 2u) << j.dump();
+  for (const auto& run : j["scenes"]) {
+    EXPECT_EQ(run["n"], 11);
+    EXPECT_EQ(run["increments"], 10);
+    EXPECT_TRUE(run["converged"].get<bool>()) << run.dump();
+    EXPECT_GT(run["height_mm"].get<double>(), 1.0) << run.dump();
+  }
+  EXPECT_EQ(j["scenes"][0]["solver"], "static");
+  EXPECT_EQ(j["scenes"][0]["factorizations"], 0);
+  EXPECT_EQ(j["scenes"][1]["solver"], "newton");
+  EXPECT_GT(j["scenes"][1]["factorizations"].get<long>(), 0);
+  EXPECT_TRUE(j["scenes"][1]["stable"].get<bool>());
+  fs::remove_all(dir);
+  const Output bad = membra_cli("bench --sizes 8 --solvers static --scenes --scene-solvers rk4");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.text.find("no equilibrium solver"), std::string::npos) << bad.text;
+}
+
+// A run that stops before its equilibrium writes every output but exits 7 and says what to try.
+TEST_F(Cli, AnUnconvergedRunExitsSevenWithAllOutputs) {
+  const Output o = membra_cli("run " + std::string(MEMBRA_SOURCE_DIR) +
+                              "/examples/anticlastic_hyperbola.json --out " + (dir / "o").string() +
+                              " --set 'sheet.resolution=[9,9]' --set simulation.max_iterations=20");
+  EXPECT_EQ(o.code, 7) << o.text;
+  EXPECT_NE(o.text.find("not converged"), std::string::npos) << o.text;
+  EXPECT_NE(o.text.find("increments"), std::string::npos) << o.text;  // what to try
+  for (const char* f : {"report.json", "final.obj", "final.ply"})
+    EXPECT_TRUE(fs::exists(dir / "o" / f)) << f;
+}
+
 TEST_F(Cli, DesignWritesTheStencilTheFormAndTheErrorsAndRunReproducesIt) {
   const fs::path design = write("d.json", R"({"name": "d",
     "target": {"cylinder": {"size": 150, "height": 20}},

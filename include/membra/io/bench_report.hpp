@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "membra/process/bench.hpp"
+#include "membra/process/scene_bench.hpp"
 
 namespace membra {
 
@@ -14,5 +15,9 @@ const BenchRow* find_bench_row(const std::vector<BenchRow>& rows, int n, const s
 
 nlohmann::json bench_report(const std::vector<BenchRow>& rows, const BenchOptions& options,
                             int threads);
+
+// `membra bench --scenes`: the scene runs as a JSON array (the "scenes" key of the report), with
+// units in the key names.
+nlohmann::json scene_bench_report(const std::vector<SceneBenchRow>& rows);
 
 }  // namespace membra
