@@ -31,6 +31,10 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
   j["tolerance"] = scene.simulation.tolerance;
   j["iterations"] = s.iterations;
   j["force_passes"] = s.force_passes;
+  j["factorizations"] = s.factorizations;
+  j["negative_curvature_steps"] = s.negative_curvature_steps;
+  j["increments"] = s.increments;
+  j["increments_halved"] = s.increments_halved;
   j["wall_seconds"] = s.wall_seconds;
   j["simulated_seconds"] = r.prepared.membrane.state.time;
   j["particles"] = m.num_particles();

@@ -1,6 +1,7 @@
 #include "membra/process/path.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "membra/measure/stress.hpp"
 #include "membra/solve/solver.hpp"
@@ -22,6 +23,8 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
   o.tolerance = tolerance < 0.0 || !sim.is_static() ? sim.tolerance : tolerance;
   o.force_scale = p.force_scale;
   o.max_iterations = sim.max_iterations;
+  // Newton: at most 500 iterations a solve, fewer if the scene caps its solvers lower.
+  o.newton_iterations = std::min<long>(o.newton_iterations, sim.max_iterations);
   o.dt = sim.dt;
   o.steps = sim.steps;
   o.stop_when_converged = sim.stop_when_converged;
@@ -50,6 +53,8 @@ void accumulate(SolveReport& total, const SolveReport& r) {
   total.factorizations += r.factorizations;
   total.negative_curvature_steps += r.negative_curvature_steps;
   total.saddle = r.saddle;
+  total.increments += r.increments;
+  total.increments_halved += r.increments_halved;
   total.wall_seconds += r.wall_seconds;
   total.residual = r.residual;
   total.residual_relative = r.residual_relative;
@@ -57,6 +62,67 @@ void accumulate(SolveReport& total, const SolveReport& r) {
   total.diverged = r.diverged;
   total.message = r.message;
 }
+
+namespace {
+
+// The label of the increment ending at t in progress lines: "release 3/10", or "release 35%"
+// between the scene's increments.
+std::string increment_stage(const std::string& name, double t, int n) {
+  const double k = t * n;
+  if (std::abs(k - std::round(k)) < 1e-9)
+    return name + " " + std::to_string(static_cast<int>(std::round(k))) + "/" + std::to_string(n);
+  return name + " " + std::to_string(static_cast<int>(std::round(100.0 * t))) + "%";
+}
+
+// Follows a gradual path with an equilibrium solver. Newton adapts its increments: one whose
+// solve does not converge is undone and taken in two halves (down to 1/8 of the scene's
+// increment), the length grows back after easy ones, and each starts from the secant predictor
+// (the last increment's motion, scaled to this one's length).
+void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
+                       const std::string& name, const Path& path, const ProgressFn& progress,
+                       FrameRecorder& recorder, SolveReport& total) {
+  const double thickness = p.membrane.sheet.material.thickness;
+  const int n = path.increments;
+  const bool newton = scene.simulation.solver == Solver::newton;
+  // Path positions in units of 1/8 of an increment, so that t = k/n exactly at the scene's
+  // increments (the same rest lengths as a fixed-increment path).
+  const int full = 8, units = full * n;
+  int at = 0, step = full, last_step = 0;
+  Points motion;  // the equilibrium's change over the last accepted increment
+  while (at < units && !total.diverged) {
+    const int next = std::min(units, at + step);
+    const double t = static_cast<double>(next) / units;
+    const Points start = s.x;
+    path.set(t);
+    if (newton && motion.cols() == s.x.cols())
+      s.x += (static_cast<double>(next - at) / last_step) * motion;
+    // Intermediate increments only carry the sheet along the path: a looser tolerance there
+    // (simulation.path_tolerance) saves their slow tails; the last one is solved in full.
+    const double tolerance =
+        next == units ? scene.simulation.tolerance : scene.simulation.path_tolerance;
+    const SolveReport r =
+        solve_scene_step(scene, p, s, increment_stage(name, t, n), progress, nullptr, tolerance);
+    if (newton && !r.converged && !r.diverged && step > 1) {
+      SolveReport spent = r;  // its work counts; its end state does not
+      spent.converged = total.converged, spent.residual = total.residual;
+      spent.residual_relative = total.residual_relative, spent.message = total.message;
+      spent.increments = 0, spent.increments_halved = 1;
+      accumulate(total, spent);
+      s.x = start;
+      step /= 2;
+      continue;
+    }
+    accumulate(total, r);
+    ++total.increments;
+    recorder.record(p.membrane.sheet.model, s.x, thickness);
+    motion = s.x - start;
+    last_step = next - at;
+    at = next;
+    if (newton && step < full && r.iterations < 30) step = std::min(full, 2 * step);
+  }
+}
+
+}  // namespace
 
 StepReport follow_path(const Scene& scene, const PreparedScene& p, State& s,
                        const std::string& name, const Path& path, const ProgressFn& progress,
@@ -73,23 +139,7 @@ StepReport follow_path(const Scene& scene, const PreparedScene& p, State& s,
     rep.solve = solve_scene_step(scene, p, s, name, progress, &recorder);
     return rep;
   }
-  const double thickness = p.membrane.sheet.material.thickness;
-  const int n = path.increments;
-  // Newton starts each increment from the secant predictor: the last increment's motion
-  // repeated, so that it begins near the next equilibrium instead of at the last one.
-  const bool predict = scene.simulation.solver == Solver::newton;
-  Points before, last;  // the equilibria of the two increments before this one
-  for (int k = 1; k <= n && !rep.solve.diverged; ++k) {
-    path.set(static_cast<double>(k) / n);
-    if (predict && before.cols() == s.x.cols()) s.x += last - before;
-    const std::string stage = name + " " + std::to_string(k) + "/" + std::to_string(n);
-    // Intermediate increments only carry the sheet along the path: a looser tolerance there
-    // (simulation.path_tolerance) saves their slow tails; the last one is solved in full.
-    const double tolerance = k < n ? scene.simulation.path_tolerance : scene.simulation.tolerance;
-    accumulate(rep.solve, solve_scene_step(scene, p, s, stage, progress, nullptr, tolerance));
-    recorder.record(p.membrane.sheet.model, s.x, thickness);
-    if (predict) before = std::move(last), last = s.x;
-  }
+  follow_increments(scene, p, s, name, path, progress, recorder, rep.solve);
   return rep;
 }
 

@@ -73,3 +73,29 @@ TEST(ProcessSteps, AStepThatCannotBeCarriedOutNamesItsField) {
 
 }  // namespace
 }  // namespace membra
+
+namespace membra {
+namespace {
+
+// Newton's increments adapt: capped at 30 iterations a solve, some of the hyperbola's ten
+// release increments fail and are taken again in halves; the path still ends fully released
+// (every latex spring back at its natural length, as a fixed-increment run leaves it).
+TEST(ProcessPaths, NewtonHalvesAnIncrementThatFails) {
+  const std::string file = std::string(MEMBRA_SOURCE_DIR) + "/examples/anticlastic_hyperbola.json";
+  const std::vector<std::string> small = {"sheet.resolution=[15,15]", "simulation.solver=newton"};
+  std::vector<std::string> capped = small;
+  capped.push_back("simulation.max_iterations=30");
+  const RunResult adaptive = run_scene(load_scene(file, capped));
+  const RunResult fixed = run_scene(load_scene(file, small));
+  EXPECT_EQ(fixed.solve.increments, 10);
+  EXPECT_EQ(fixed.solve.increments_halved, 0);
+  EXPECT_GE(adaptive.solve.increments_halved, 1);
+  EXPECT_GT(adaptive.solve.increments, 10);
+  const Springs& a = adaptive.prepared.membrane.sheet.model.springs;
+  const Springs& b = fixed.prepared.membrane.sheet.model.springs;
+  ASSERT_EQ(a.size(), b.size());
+  for (int i = 0; i < a.size(); ++i) EXPECT_EQ(a.rest_length[i], b.rest_length[i]) << i;
+}
+
+}  // namespace
+}  // namespace membra

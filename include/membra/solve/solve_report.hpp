@@ -18,6 +18,8 @@ struct SolveReport {
   long force_passes = 0;              // full force evaluations
   long factorizations = 0;            // newton: sparse Cholesky factorizations
   long negative_curvature_steps = 0;  // newton: steps taken along negative curvature (saddles)
+  long increments = 0;                // path increments solved (a retried one counts once)
+  long increments_halved = 0;         // newton: increments that failed and were taken in halves
   bool saddle = false;  // newton: stopped at a point where the energy is not a minimum
   double wall_seconds = 0.0;
 };
