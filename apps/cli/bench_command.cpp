@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "membra/core/input_error.hpp"
 #include "membra/io/bench_report.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/bench.hpp"
@@ -41,21 +42,25 @@ void print_table(const std::vector<BenchRow>& rows, const BenchOptions& o) {
 
 // Every scene file at every size with every solver, one line logged per run.
 std::vector<SceneBenchRow> run_scene_bench(const BenchArgs& args) {
+  std::vector<Solver> solvers;
+  for (const std::string& name : args.scene_solvers) {
+    const auto solver = solver_from_name(name);
+    if (!solver || !solver_info(*solver).equilibrium)
+      throw InputError("--scene-solvers", "'" + name + "' is no equilibrium solver");
+    solvers.push_back(*solver);
+  }
   std::vector<SceneBenchRow> rows;
   for (const std::string& file : args.scene_files)
     for (int n : args.scene_sizes) {
       const std::string res =
           "sheet.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]";
       const Scene scene = load_scene(file, {res});
-      for (const std::string& name : args.scene_solvers) {
-        const auto solver = solver_from_name(name);
-        if (!solver || !solver_info(*solver).equilibrium)
-          throw std::invalid_argument("--scene-solvers: '" + name + "' is no equilibrium solver");
-        rows.push_back(bench_scene(scene, *solver, args.budget));
+      for (Solver solver : solvers) {
+        rows.push_back(bench_scene(scene, solver, args.budget));
         const SceneBenchRow& r = rows.back();
         if (!args.quiet)
-          std::cerr << r.scene << " " << n << " " << name << ": " << r.report.wall_seconds << " s"
-                    << (r.over_budget ? " (budget)" : "") << "\n";
+          std::cerr << r.scene << " " << n << " " << r.solver << ": " << r.report.wall_seconds
+                    << " s" << (r.over_budget ? " (budget)" : "") << "\n";
       }
     }
   return rows;

@@ -10,12 +10,13 @@ namespace membra {
 
 const std::vector<SolverInfo>& solver_table() {
   // Memory per particle: measured 1.7 kB (static) and 12 kB (newton's Cholesky factor), with a
-  // margin (docs/errors.md).
+  // margin; newton's exact and projected Hessians with their element slots add about 10 kB
+  // (estimated from the element counts; docs/errors.md).
   static const std::vector<SolverInfo> table = {
       {Solver::static_fire, "static", true, true, 2.5e3,
        "FIRE on stiffness-scaled masses (the default)"},
-      {Solver::newton, "newton", true, true, 16e3,
-       "shifted Newton with sparse Cholesky (experimental)"},
+      {Solver::newton, "newton", true, true, 28e3,
+       "Newton on analytic Hessians with sparse Cholesky and saddle escapes (docs/solver.md)"},
       {Solver::rk4, "rk4", false, true, 2.5e3, "the paper's Runge-Kutta 4, time step T"},
       {Solver::symplectic_euler, "symplectic_euler", false, true, 2.5e3,
        "semi-implicit Euler, time step T"},

@@ -11,6 +11,7 @@
 #include "membra/model/hinge_kernel.hpp"
 #include "membra/process/run.hpp"
 #include "membra/solve/newton_solver.hpp"
+#include "test_util.hpp"
 
 namespace membra {
 namespace {
@@ -125,8 +126,7 @@ double released_strip_curvature(int side) {
   const Points& x = m.state.x;
   const Vec3 p0 = x.col(g.particle(10, 2)), p1 = x.col(g.particle(20, 2)),
              p2 = x.col(g.particle(30, 2));
-  const double a = (p1 - p0).norm(), b = (p2 - p1).norm(), c = (p2 - p0).norm();
-  const double curvature = 2.0 * (p1 - p0).cross(p2 - p0).norm() / (a * b * c);
+  const double curvature = circle_curvature(p0, p1, p2);
   const double bulge = p1.z() - 0.5 * (p0.z() + p2.z());
   return bulge > 0 ? curvature : -curvature;
 }
