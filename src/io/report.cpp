@@ -88,6 +88,11 @@ void report_form(const RunResult& r, json& j) {
                     {"min_density", r.curvature.min_density * per_mm2},
                     {"max_density", r.curvature.max_density * per_mm2},
                     {"classification", r.form}};
+  // The global form's curvature (window-averaged, docs/measures.md): a wrinkled bowl is a bowl.
+  j["curvature"]["global"] = {{"total", r.curvature_global.total},
+                              {"positive", r.curvature_global.positive},
+                              {"negative", r.curvature_global.negative},
+                              {"classification", r.form_global}};
   j["stress"] = {{"min", r.stress.min_stress / units::MPa},
                  {"max", r.stress.max_stress / units::MPa}};
   j["strain"] = {{"min", r.stress.min_strain}, {"max", r.stress.max_strain}};
@@ -157,6 +162,9 @@ json report_units() {
       {"curvature.positive", "rad"},
       {"curvature.negative", "rad"},
       {"curvature.boundary", "rad (sum of pi - angle sum at boundary vertices)"},
+      {"curvature.global.total", "rad (of the window-averaged global form)"},
+      {"curvature.global.positive", "rad"},
+      {"curvature.global.negative", "rad"},
       {"curvature.min_density", "1/mm^2"},
       {"stress.min", "MPa (spring force / (tributary width x sheet thickness); < 0 compression)"},
       {"stress.max", "MPa"},

@@ -85,6 +85,19 @@ Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double
 
 }  // namespace
 
+// The window radius of the global/fold split: 1/16 of the paper's larger side (0: none).
+double window_radius(const Points& x, const Points& paper) {
+  if (x.cols() == 0 || paper.cols() != x.cols()) return 0.0;
+  const Vec3 extent = paper.rowwise().maxCoeff() - paper.rowwise().minCoeff();
+  return std::max(extent.x(), extent.y()) / 16.0;
+}
+
+Points global_form(const Points& x, const Points& paper) {
+  const double radius = window_radius(x, paper);
+  if (!(radius > 0.0)) return Points();
+  return paper_neighbourhoods(x, paper, radius, 16.0 * radius).mean;
+}
+
 ShapeSummary summarize_shape(const Points& x, const Points& paper) {
   ShapeSummary s;
   if (x.cols() == 0) return s;
@@ -92,11 +105,9 @@ ShapeSummary summarize_shape(const Points& x, const Points& paper) {
   s.bbox_max = x.rowwise().maxCoeff();
   s.z_range = s.bbox_max.z() - s.bbox_min.z();
   s.height = height_over_best_plane(x, &s.normal);
-  if (paper.cols() != x.cols()) return s;
-  const Vec3 extent = paper.rowwise().maxCoeff() - paper.rowwise().minCoeff();
-  const double size = std::max(extent.x(), extent.y());
-  if (!(size > 0.0)) return s;
-  const Neighbourhoods near = paper_neighbourhoods(x, paper, size / 16.0, size);
+  const double radius = window_radius(x, paper);
+  if (!(radius > 0.0)) return s;
+  const Neighbourhoods near = paper_neighbourhoods(x, paper, radius, 16.0 * radius);
   s.global_height = height_over_best_plane(near.mean);
   s.fold_rms = std::sqrt(near.fold.squaredNorm() / static_cast<double>(x.cols()));
   s.fold_max = near.fold.maxCoeff();

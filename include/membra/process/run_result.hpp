@@ -55,8 +55,12 @@ struct RunResult {
   ShapeSummary shape;
   GaussianCurvature curvature;  // densities smoothed on the grid
   std::string form;             // classify_form(curvature)
-  SpringStress stress;          // per spring, for the sheet's thickness
-  std::vector<Frame> frames;    // scene.output.frames instants (dynamic solves, release path)
+  // The same of the global form (global_form in shape.hpp): wrinkles finer than the window
+  // averaged out, so a bowl with a wrinkled rim reads as a bowl.
+  GaussianCurvature curvature_global;
+  std::string form_global;
+  SpringStress stress;        // per spring, for the sheet's thickness
+  std::vector<Frame> frames;  // scene.output.frames instants (dynamic solves, release path)
   std::vector<StressFeature> features;              // the cuts and holes, in step order
   std::vector<StressConcentration> concentrations;  // stress at each feature, final state
   std::optional<CurvatureMapResult> curvature_map;  // scenes with a curvature_map step
