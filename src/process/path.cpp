@@ -47,15 +47,24 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
   return solve_with(sim.solver, m, s, o);
 }
 
-void accumulate(SolveReport& total, const SolveReport& r) {
+namespace {
+
+// Adds a solve's work (iterations, passes, factorizations, time) to a total, not its outcome.
+void add_work(SolveReport& total, const SolveReport& r) {
   total.iterations += r.iterations;
   total.force_passes += r.force_passes;
   total.factorizations += r.factorizations;
   total.negative_curvature_steps += r.negative_curvature_steps;
-  total.saddle = r.saddle;
   total.increments += r.increments;
   total.increments_halved += r.increments_halved;
   total.wall_seconds += r.wall_seconds;
+}
+
+}  // namespace
+
+void accumulate(SolveReport& total, const SolveReport& r) {
+  add_work(total, r);
+  total.saddle = r.saddle;
   total.residual = r.residual;
   total.residual_relative = r.residual_relative;
   total.converged = r.converged;
@@ -103,11 +112,8 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
     const SolveReport r =
         solve_scene_step(scene, p, s, increment_stage(name, t, n), progress, nullptr, tolerance);
     if (newton && !r.converged && !r.diverged && step > 1) {
-      SolveReport spent = r;  // its work counts; its end state does not
-      spent.converged = total.converged, spent.residual = total.residual;
-      spent.residual_relative = total.residual_relative, spent.message = total.message;
-      spent.increments = 0, spent.increments_halved = 1;
-      accumulate(total, spent);
+      add_work(total, r);  // its work counts; its end state does not
+      ++total.increments_halved;
       s.x = start;
       step /= 2;
       continue;

@@ -50,6 +50,15 @@ int number_dofs(const Model& model, const std::array<int, 6>* gauge, bool in_pla
   return ndof;
 }
 
+// The metric of the regularising shifts: |diagonal| of the assembled matrix (stiffness-scaled,
+// so a 1000:1 resin/latex contrast is shifted in proportion), and in `floor` 1e-12 of its
+// largest entry for coordinates that nothing stiffens.
+Eigen::VectorXd shift_metric(const HessianAssembler& h, double& floor) {
+  Eigen::VectorXd diag = h.diagonal().cwiseAbs();
+  floor = 1e-12 * (diag.size() ? diag.maxCoeff() : 1.0);
+  return diag;
+}
+
 // One solve: the state of Newton's iteration and its kinds of step.
 class Newton {
  public:
@@ -147,16 +156,19 @@ bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvatur
     const double et = potential_energy(model_, xt);
     if (!std::isfinite(et)) continue;
     const double promised = alpha * slope + 0.5 * alpha * alpha * std::min(curvature, 0.0);
-    bool accept = et <= energy_ + 1e-4 * promised;
-    if (!accept && std::abs(et - energy_) <= 1e-12 * std::abs(energy_)) {
-      Points ft;
-      compute_static_forces(model_, xt, ft);
-      ++r_.force_passes;
-      accept = max_free_force(model_, ft) < r_.residual;
-    }
-    if (!accept) continue;
+    const bool armijo = et <= energy_ + 1e-4 * promised;
+    if (!armijo && !(std::abs(et - energy_) <= 1e-12 * std::abs(energy_))) continue;
+    Points ft;
+    compute_static_forces(model_, xt, ft);
+    ++r_.force_passes;
+    const double residual = max_free_force(model_, ft);
+    if (!armijo && !(residual < r_.residual)) continue;
+    // Accepted: the forces and energy just computed are the new state's.
     x_ = std::move(xt);
-    evaluate();
+    f_ = std::move(ft);
+    energy_ = et;
+    r_.residual = residual;
+    r_.residual_relative = residual / o_.force_scale;
     last_alpha_ = alpha;
     return true;
   }
@@ -168,8 +180,8 @@ bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvatur
 // energy is convex here, a minimum if the forces vanish.
 bool Newton::exact_is_positive_definite() {
   exact_.assemble(x_, false);
-  const Eigen::VectorXd diag = exact_.diagonal().cwiseAbs();
-  const double floor = 1e-12 * (diag.size() ? diag.maxCoeff() : 1.0);
+  double floor = 0.0;
+  const Eigen::VectorXd diag = shift_metric(exact_, floor);
   exact_.add_to_diagonal((1e-10 * diag).array() + floor);
   return factorize(exact_.lower());
 }
@@ -186,8 +198,8 @@ bool Newton::exact_step() {
 // across iterations) until the factorization succeeds.
 bool Newton::factor_projected() {
   projected_.assemble(x_, true);
-  const Eigen::VectorXd diag = projected_.diagonal().cwiseAbs();
-  const double floor = 1e-12 * (diag.size() ? diag.maxCoeff() : 1.0);
+  double floor = 0.0;
+  const Eigen::VectorXd diag = shift_metric(projected_, floor);
   double applied = 0.0;
   for (int attempt = 0; attempt < 20; ++attempt, mu_ *= 10.0) {
     projected_.add_to_diagonal(((mu_ - applied) * diag).array() + (applied == 0.0 ? floor : 0.0));
