@@ -9,14 +9,13 @@
 #include "design_command.hpp"
 #include "membra/core/input_error.hpp"
 #include "membra/io/output_set.hpp"
-#include "membra/io/report.hpp"
-#include "membra/io/run_files.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
-#include "membra/render/run_pictures.hpp"
+#include "membra/render/run_outputs.hpp"
 #include "membra/version.hpp"
 #include "membra/view/view_script.hpp"
 #include "progress_bar.hpp"
+#include "sweep_command.hpp"
 #include "view_command.hpp"
 
 namespace {
@@ -79,9 +78,8 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   const membra::RunResult r =
       membra::run_scene(scene, [&](const membra::Progress& p) { bar.update(p); });
   bar.finish();
-  const nlohmann::json report = membra::make_report(scene, r);
-  out.add("report.json", [&](std::ostream& os) { os << report.dump(2) << '\n'; });
-  if (r.solve.diverged) {
+  const membra::StagedRun staged = membra::stage_run_outputs(scene, r, opts, out);
+  if (staged.report_only) {
     // A diverged state is no form: only the report is written, and it says so.
     out.commit();
     std::cerr << "membra: " << scene_file << ": " << r.solve.message << "\n"
@@ -91,8 +89,7 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   if (r.curvature_map && !r.curvature_map->message.empty())
     std::cerr << "membra: warning: " << scene_file << ": " << r.curvature_map->step << ": "
               << r.curvature_map->message << "\n";
-  membra::stage_run_files(scene, r, opts, out);
-  const std::string render_note = membra::stage_run_pictures(scene, r, opts, out);
+  const std::string& render_note = staged.render_note;
   if (!render_note.empty()) std::cerr << "membra: warning: no PNG renders: " << render_note << "\n";
   out.commit();
   if (!quiet) {
@@ -112,6 +109,7 @@ struct Args {
   membra::PictureOptions run_opts;
   membra::cli::BenchArgs bench;
   membra::cli::DesignArgs design;
+  membra::cli::SweepArgs sweep;
   membra::viewer::ViewArgs view;
   bool script_help = false;
 };
@@ -188,6 +186,21 @@ CLI::App* add_design(CLI::App& app, Args& a) {
   return design;
 }
 
+CLI::App* add_sweep(CLI::App& app, Args& a) {
+  auto* sweep = app.add_subcommand("sweep", "Run a sweep of scenes on a Dask cluster");
+  sweep->add_option("file", a.sweep.file, "Sweep file (JSON, docs/sweeps.md)")->required();
+  sweep->add_option("--out,-o", a.sweep.out_dir, "Output directory (default: out/<name>)");
+  sweep
+      ->add_option("--scheduler", a.sweep.scheduler,
+                   "Address of a running Dask scheduler (default: a local cluster)")
+      ->type_name("tcp://HOST:PORT");
+  sweep->add_option("--workers", a.sweep.workers, "Worker processes of the local cluster")
+      ->check(CLI::Range(1, 256));
+  sweep->add_flag("--no-resume", a.sweep.no_resume, "Run every scene again");
+  sweep->add_flag("--quiet,-q", a.sweep.quiet, "No progress lines");
+  return sweep;
+}
+
 CLI::App* add_view(CLI::App& app, Args& a) {
   auto* view = app.add_subcommand("view", "The interactive viewer (or a script driving it)");
   view->add_option("scene", a.view.scene, "Scene file (JSON); default: a plain latex sheet");
@@ -201,7 +214,7 @@ CLI::App* add_view(CLI::App& app, Args& a) {
 
 // The chosen subcommand, carried out.
 struct Commands {
-  CLI::App *run, *validate, *bench, *design, *view;
+  CLI::App *run, *validate, *bench, *design, *view, *sweep;
 };
 
 int dispatch(const Commands& c, const Args& a) {
@@ -214,6 +227,7 @@ int dispatch(const Commands& c, const Args& a) {
   }
   if (*c.validate) return cmd_validate(a.scene_file, a.sets, a.quiet);
   if (*c.design) return membra::cli::cmd_design(a.design);
+  if (*c.sweep) return membra::cli::cmd_sweep(a.sweep);
   if (*c.view) {
     if (a.script_help) {
       std::cout << "membra view --script FILE: one command a line ('#' comments)\n"
@@ -239,8 +253,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("membra ") + membra::kVersion);
   app.require_subcommand(1);
   Args a;
-  const Commands c{add_run(app, a), add_validate(app, a), add_bench(app, a), add_design(app, a),
-                   add_view(app, a)};
+  const Commands c{add_run(app, a),    add_validate(app, a), add_bench(app, a),
+                   add_design(app, a), add_view(app, a),     add_sweep(app, a)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

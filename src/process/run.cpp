@@ -1,37 +1,63 @@
 #include "membra/process/run.hpp"
 
+#include <stdexcept>
+
 #include "membra/process/path.hpp"
 #include "membra/process/steps.hpp"
 #include "membra/process/summary.hpp"
 
 namespace membra {
 
-RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
-  RunResult r;
-  r.prepared = prepare_scene(scene);
-  FrameRecorder recorder{scene.output.frames, &r.frames};
-  State& s = r.prepared.membrane.state;
-  auto record = [&](StepReport step) {
-    accumulate(r.solve, step.solve);
-    r.steps.push_back(std::move(step));
-    return !r.solve.diverged;
-  };
-  if (scene.protocol.empty())
-    record({"solve", solve_scene_step(scene, r.prepared, s, "solve", progress, &recorder), 0});
-  std::function<double(const Vec2&)> curvature_field;  // of the last curvature_map step
-  for (const ProtocolStep& step : scene.protocol) {
-    StepEffects effects;
-    const Path path = apply_step(r.prepared, step, effects);
-    for (StressFeature& f : effects.features) r.features.push_back(std::move(f));
-    if (effects.curvature_map) r.curvature_map = std::move(effects.curvature_map);
-    const StepReport followed =
-        follow_path(scene, r.prepared, s, effects.report.name, path, progress, recorder);
-    effects.report.solve = followed.solve;
-    if (const auto* cm = step.as<CurvatureMapStep>()) curvature_field = cm->curvature;
-    if (!record(std::move(effects.report))) break;
-  }
-  if (!r.solve.diverged) summarize_run(r, curvature_field);
+SceneRun::SceneRun(const Scene& scene, ProgressFn progress)
+    : scene_(scene), progress_(std::move(progress)) {
+  r_.prepared = prepare_scene(scene);
+  recorder_ = FrameRecorder{scene.output.frames, &r_.frames};
+}
+
+bool SceneRun::record(StepReport step) {
+  accumulate(r_.solve, step.solve);
+  r_.steps.push_back(std::move(step));
+  return !r_.solve.diverged;
+}
+
+bool SceneRun::apply(const ProtocolStep& step) {
+  if (diverged()) throw std::logic_error("the run diverged: no further step can be applied");
+  StepEffects effects;
+  const Path path = apply_step(r_.prepared, step, effects);
+  for (StressFeature& f : effects.features) r_.features.push_back(std::move(f));
+  if (effects.curvature_map) r_.curvature_map = std::move(effects.curvature_map);
+  State& s = r_.prepared.membrane.state;
+  const StepReport followed =
+      follow_path(scene_, r_.prepared, s, effects.report.name, path, progress_, recorder_);
+  effects.report.solve = followed.solve;
+  if (const auto* cm = step.as<CurvatureMapStep>()) curvature_field_ = cm->curvature;
+  return record(std::move(effects.report));
+}
+
+bool SceneRun::solve() {
+  if (diverged()) throw std::logic_error("the run diverged: it cannot be solved further");
+  State& s = r_.prepared.membrane.state;
+  return record(
+      {"solve", solve_scene_step(scene_, r_.prepared, s, "solve", progress_, &recorder_), 0});
+}
+
+RunResult SceneRun::result() const {
+  RunResult r = r_;
+  if (!r.solve.diverged) summarize_run(r, curvature_field_);
   return r;
+}
+
+RunResult SceneRun::finish() {
+  if (!r_.solve.diverged) summarize_run(r_, curvature_field_);
+  return std::move(r_);
+}
+
+RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
+  SceneRun run(scene, progress);
+  if (scene.protocol.empty()) run.solve();
+  for (const ProtocolStep& step : scene.protocol)
+    if (!run.apply(step)) break;
+  return run.finish();
 }
 
 }  // namespace membra

@@ -1,12 +1,45 @@
 #pragma once
 // Running a scene: prepare its membrane, carry out the protocol step by step (each step's path
 // followed to equilibrium), summarise the end state.
+#include <functional>
+
 #include "membra/core/progress.hpp"
+#include "membra/process/path.hpp"
 #include "membra/process/prepare.hpp"
 #include "membra/process/run_result.hpp"
 #include "membra/process/scene.hpp"
 
 namespace membra {
+
+// A run in progress, one step at a time: what run_scene does in one go, for front ends that let
+// the user carry out the process step by step (the Python module's Membrane). The scene must
+// outlive the run.
+class SceneRun {
+ public:
+  // Prepares the scene's membrane (throws InputError as prepare_scene does).
+  explicit SceneRun(const Scene& scene, ProgressFn progress = {});
+  SceneRun(const SceneRun&) = delete;  // the frame recorder points into the result
+  SceneRun& operator=(const SceneRun&) = delete;
+  // Carries out one step and follows its path to equilibrium. Returns false when the solve
+  // diverged (the run is then over: further steps are refused with std::logic_error).
+  bool apply(const ProtocolStep& step);
+  // A solve of the scene as it stands (a scene without protocol: its only step).
+  bool solve();
+  // The run so far, summarised (a copy: steps may follow).
+  RunResult result() const;
+  // The run summarised and handed over; the run is empty afterwards.
+  RunResult finish();
+  const RunResult& partial() const { return r_; }
+  bool diverged() const { return r_.solve.diverged; }
+
+ private:
+  bool record(StepReport step);
+  const Scene& scene_;
+  ProgressFn progress_;
+  RunResult r_;
+  FrameRecorder recorder_;
+  std::function<double(const Vec2&)> curvature_field_;  // of the last curvature_map step
+};
 
 // Runs a scene to the end. `progress` (optional) is called every so often. Throws InputError
 // when a step cannot be carried out (a pattern that covers no spring).

@@ -1,0 +1,54 @@
+"""Inverse design: which resin pattern gives a form asked for (docs/inverse_design.md)."""
+
+import json
+import os
+from pathlib import Path
+
+from . import _membra
+
+
+class DesignResult:
+    """The best stencil found: rms_error and max_error (% of the target's diameter),
+    flat_error (what a flat sheet scores), reachable and message, the best form's positions
+    (n, 3, mm) and triangles, scene (the scene.json dict that reproduces the form through
+    membra.run), report (as the design's report.json), write(dir)."""
+
+    def __init__(self, native):
+        self._native = native
+
+    rms_error = property(lambda self: self._native.rms_error)
+    max_error = property(lambda self: self._native.max_error)
+    flat_error = property(lambda self: self._native.flat_error)
+    reachable = property(lambda self: self._native.reachable)
+    message = property(lambda self: self._native.message)
+    positions = property(lambda self: self._native.positions)
+    triangles = property(lambda self: self._native.triangles)
+    scene = property(lambda self: self._native.scene)
+    report = property(lambda self: self._native.report)
+
+    def write(self, dir):
+        """Writes what `membra design target FILE --out DIR` writes, all or nothing."""
+        self.render_note = self._native.write(str(dir))
+        return Path(dir)
+
+    def __repr__(self):
+        return f"<membra.DesignResult rms {self.rms_error:.2f} % (flat {self.flat_error:.2f} %)>"
+
+
+def design(target, out=None, progress=None, base_dir=None):
+    """Searches the stencil whose released form is closest to a target (membra design target).
+
+    target: a design file path, or its content as a dict (docs/inverse_design.md).
+    out: if given, the folder to write the outputs to.
+    progress: None or a callable taking a dict per forward simulation {"index", "rms_error",
+        "max_error", "resin_share", "pieces", "seconds", "best", "note"}.
+    Raises membra.SceneError naming the field at fault in the design file.
+    """
+    if isinstance(target, dict):
+        spec = _membra.parse_design(json.dumps(target), str(base_dir or os.getcwd()))
+    else:
+        spec = _membra.load_design(str(target))
+    result = DesignResult(_membra.design(spec, progress))
+    if out is not None:
+        result.write(out)
+    return result

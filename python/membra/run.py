@@ -1,0 +1,25 @@
+"""Running a scene in one go, as `membra run` does."""
+
+from . import _membra
+from .result import Result
+from .scene import as_scene
+
+
+def run(scene, out=None, set=None, progress=None):
+    """Runs a scene to the end and returns a membra.Result.
+
+    scene: a membra.Scene, a dict, JSON text or a scene file path.
+    out: if given, the folder to write the outputs to (Result.write).
+    set: overrides, as for membra.Scene.
+    progress: None or a callable taking a dict {"stage", "iteration", "max_iterations",
+        "residual_relative", "wall_seconds"}, called every so often.
+
+    The solve runs without the GIL (other Python threads go on); Ctrl-C raises
+    KeyboardInterrupt within a progress interval. A run that diverges returns a Result with
+    .diverged True (write() then writes report.json only).
+    """
+    s = as_scene(scene, set)
+    result = Result(_membra.run(s._native, progress), s)
+    if out is not None:
+        result.write(out)
+    return result

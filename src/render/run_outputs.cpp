@@ -1,0 +1,17 @@
+#include "membra/render/run_outputs.hpp"
+
+#include "membra/io/report.hpp"
+#include "membra/render/run_pictures.hpp"
+
+namespace membra {
+
+StagedRun stage_run_outputs(const Scene& scene, const RunResult& r, const PictureOptions& opts,
+                            OutputSet& out) {
+  const nlohmann::json report = make_report(scene, r);
+  out.add("report.json", [&](std::ostream& os) { os << report.dump(2) << '\n'; });
+  if (r.solve.diverged) return {true, ""};
+  stage_run_files(scene, r, opts, out);
+  return {false, stage_run_pictures(scene, r, opts, out)};
+}
+
+}  // namespace membra

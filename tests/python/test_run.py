@@ -1,0 +1,112 @@
+"""membra.run against the CLI, the arrays' shapes and units, the step-by-step Membrane."""
+
+import json
+import subprocess
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import membra
+
+TIMING_KEYS = {"wall_seconds", "seconds"}
+
+
+def without_timings(value):
+    """A report without its wall-clock times, the only values two runs may differ in."""
+    if isinstance(value, dict):
+        return {k: without_timings(v) for k, v in value.items() if k not in TIMING_KEYS}
+    if isinstance(value, list):
+        return [without_timings(v) for v in value]
+    return value
+
+
+def test_run_writes_what_the_cli_writes(root, cli, tmp_path):
+    scene = root / "examples" / "synclastic_ellipse.json"
+    sets = ["sheet.resolution=[13,13]", "simulation.solver=newton"]
+    args = [cli, "run", str(scene), "--quiet", "--out", str(tmp_path / "cli")]
+    subprocess.run(args + [a for s in sets for a in ("--set", s)], check=True,
+                   env={"OMP_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"})
+    result = membra.run(membra.Scene(scene, set=sets), out=tmp_path / "py")
+    cli_files = sorted(p.name for p in (tmp_path / "cli").iterdir())
+    assert sorted(p.name for p in (tmp_path / "py").iterdir()) == cli_files
+    for name in ("final.obj", "final.ply", "pattern.svg", "pattern.dxf"):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    cli_report = json.loads((tmp_path / "cli" / "report.json").read_text())
+    py_report = json.loads((tmp_path / "py" / "report.json").read_text())
+    assert without_timings(py_report) == without_timings(cli_report)
+    assert without_timings(result.report) == without_timings(cli_report)
+
+
+def test_arrays_have_their_shapes_and_units(small_ellipse):
+    r = membra.run(small_ellipse)
+    n = r.report["particles"]
+    assert r.positions.shape == (n, 3) and r.positions.dtype == np.float64
+    assert r.paper_positions.shape == (n, 2)
+    assert r.triangles.shape == (r.report["triangles"], 3)
+    assert r.triangles.min() == 0 and r.triangles.max() == n - 1
+    assert r.gaussian_curvature.shape == (n,) and r.stress.shape == (n,)
+    # mm: the paper sheet is 200 mm square; the height is the report's (mm).
+    assert r.paper_positions.min() == pytest.approx(0.0)
+    assert r.paper_positions.max() == pytest.approx(200.0)
+    z = r.positions[:, 2]
+    assert np.ptp(z) == pytest.approx(r.report["shape"]["z_range"], rel=1e-9)
+    # 1/mm^2 and MPa: the extremes are the report's.
+    assert r.gaussian_curvature.max() == pytest.approx(r.report["curvature"]["max_density"], rel=1e-9)
+    assert r.gaussian_curvature.min() == pytest.approx(r.report["curvature"]["min_density"], rel=1e-9)
+    assert 0 < r.stress.max() <= r.report["stress"]["max"] * (1 + 1e-9)
+    assert r.converged and not r.diverged
+
+
+def test_membrane_step_by_step_is_membra_run(small_ellipse):
+    whole = membra.run(small_ellipse)
+    m = membra.Membrane(small_ellipse)
+    assert m.stretch(lambda_=[1.5, 1.0])
+    assert np.ptp(m.positions[:, 0]) == pytest.approx(300.0)  # stretched 1.5x on the frame
+    for entry in small_ellipse.data["protocol"][1:]:
+        assert m.step(entry)
+    assert [s["step"] for s in m.steps] == ["stretch", "impregnate", "release"]
+    assert np.array_equal(m.positions, whole.positions)
+    assert without_timings(m.result().report) == without_timings(whole.report)
+
+
+def test_the_solve_releases_the_gil(small_ellipse):
+    scene = small_ellipse.with_set({"sheet.resolution": [21, 21]})
+    ticks = []
+    done = threading.Event()
+
+    def tick():
+        while not done.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.005)
+
+    t = threading.Thread(target=tick)
+    t.start()
+    start = time.perf_counter()
+    membra.run(scene)
+    seconds = time.perf_counter() - start
+    done.set()
+    t.join()
+    during = [x for x in ticks if start < x < start + seconds]
+    # A thread that sleeps 5 ms between ticks ticks ~200 times a second unless the GIL is held.
+    assert len(during) > 0.3 * seconds / 0.005, (len(during), seconds)
+
+
+def test_ctrl_c_stops_a_run(small_ellipse):
+    import _thread
+
+    scene = small_ellipse.with_set({"sheet.resolution": [31, 31], "simulation.solver": "static"})
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    timer.start()
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        membra.run(scene)
+    assert time.perf_counter() - start < 10.0
+    timer.cancel()
+
+
+def test_progress_is_reported(small_ellipse):
+    seen = []
+    membra.run(small_ellipse, progress=seen.append)
+    assert seen and {"stage", "iteration", "residual_relative"} <= set(seen[0])
