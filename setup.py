@@ -5,7 +5,7 @@ build/ and from the CMake build in build/) and installs the package `membra` wit
 part. Debian 12 has no scikit-build-core, hence this small driver.
 """
 
-import os
+import re
 import shutil
 import subprocess
 import sys
@@ -38,11 +38,12 @@ class CMakeBuild(build_ext):
 
 setup(
     name="membra",
-    version=(ROOT / "CMakeLists.txt").read_text().split("VERSION ")[1].split()[0],
+    version=re.search(r"project\(membra VERSION (\S+)", (ROOT / "CMakeLists.txt").read_text())[1],
     description="Form-finding for pre-stretched, resin-impregnated membranes",
     packages=["membra"],
     package_dir={"membra": "python/membra"},
     ext_modules=[Extension("membra._membra", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
+    options={"build": {"build_base": "build-pip/setuptools"}},  # not CMake's build/
     python_requires=">=3.9",
 )

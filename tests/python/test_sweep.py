@@ -171,3 +171,14 @@ def test_the_cli_runs_a_sweep_file(root, cli, tmp_path):
     bad = subprocess.run([cli, "sweep", str(tmp_path / "missing.json")], capture_output=True,
                          text=True)
     assert bad.returncode == 2 and "missing.json" in bad.stderr
+
+
+def test_a_design_sweep_reports_each_design_error(root, tmp_path):
+    spec = {"name": "caps", "design": str(root / "examples" / "inverse_cap.json"),
+            "set": {"sheet.resolution": 9, "design.evaluations": 2},
+            "grid": {"target.cap.height": [16, 24]}}
+    table = membra.sweep(spec, out=tmp_path, workers=1, contact_sheet=False)
+    assert (table["error"] == "").all(), table["error"].tolist()
+    for _, row in table.iterrows():
+        report = json.loads((Path(row["out"]) / "report.json").read_text())
+        assert row["design_error"] == report["design"]["rms_error"] > 0
