@@ -5,9 +5,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include "bench_command.hpp"
 #include "design_command.hpp"
+
 #include "membra/core/input_error.hpp"
+#include "membra/core/stop_request.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
@@ -27,10 +30,30 @@ enum Exit : int {
   kBadInput = 2,
   kDiverged = 3,
   kOutput = 4,
-  kUnreachable = 5,  // membra design: the target cannot be reached (best attempt written)
-  kNoDisplay = 6,    // membra view: no window can be opened
-  kNotAtRest = 7     // membra run: an equilibrium solver ended unconverged or at a saddle
+  kUnreachable = 5,   // membra design: the target cannot be reached (best attempt written)
+  kNoDisplay = 6,     // membra view: no window can be opened
+  kNotAtRest = 7,     // membra run: an equilibrium solver ended unconverged or at a saddle
+  kInterrupted = 128  // + the signal: stopped by SIGINT (130) or SIGTERM (143), nothing written
 };
+
+// The first SIGINT or SIGTERM asks the run to stop (it stops at its next progress report, within
+// a fraction of a second, writing nothing); a second one ends the process at once.
+extern "C" void on_stop_signal(int signal) {
+  if (membra::stop_requested()) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+    return;
+  }
+  membra::request_stop(signal);
+}
+
+void install_stop_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
 
 int cmd_validate(const std::string& scene_file, const std::vector<std::string>& sets, bool quiet) {
   const membra::Scene scene = membra::load_scene(scene_file, sets);
@@ -91,6 +114,8 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
               << r.curvature_map->message << "\n";
   const std::string& render_note = staged.render_note;
   if (!render_note.empty()) std::cerr << "membra: warning: no PNG renders: " << render_note << "\n";
+  if (const int sig = membra::stop_requested())  // the staged files go with the OutputSet
+    throw membra::Interrupted(sig, "while writing the outputs");
   out.commit();
   if (!quiet) {
     std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"
@@ -261,8 +286,15 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kOk : kBadInput;
   }
+  install_stop_handlers();
   try {
     return dispatch(c, a);
+  } catch (const membra::Interrupted& e) {
+    std::cerr << "\nmembra: " << (e.signal() == SIGTERM ? "terminated" : "stopped") << " ("
+              << (e.signal() == SIGTERM ? "SIGTERM" : "SIGINT") << ") " << e.where()
+              << "; nothing was written, and earlier results in the output folder are as "
+                 "they were\n";
+    return kInterrupted + e.signal();
   } catch (const membra::InputError& e) {
     std::cerr << "membra: error: " << e.what() << "\n";
     return kBadInput;

@@ -1,9 +1,19 @@
 """`python3 -m membra sweep SWEEP.json --out DIR [--scheduler ADDR]`: what `membra sweep` runs
 (docs/sweeps.md). Exit codes as docs/cli.md: 0 every scene ran, 2 a bad sweep file, 4 the
-outputs cannot be written, 8 the sweep ran but some scenes failed (their rows say why)."""
+outputs cannot be written, 8 the sweep ran but some scenes failed (their rows say why), 130 / 143
+stopped by SIGINT / SIGTERM (finished scenes are kept; running it again resumes)."""
 
 import argparse
+import signal
 import sys
+
+
+class _Terminated(Exception):
+    """SIGTERM, turned into an exception so that the sweep's cluster is closed on the way out."""
+
+
+def _on_sigterm(signum, frame):
+    raise _Terminated()
 
 
 def main(argv=None):
@@ -26,6 +36,7 @@ def main(argv=None):
     from .sweep_spec import load_sweep
     from .sweeps import sweep
 
+    signal.signal(signal.SIGTERM, _on_sigterm)
     try:
         spec = load_sweep(args.file)
         out = args.out or f"out/{spec['name']}"
@@ -37,6 +48,11 @@ def main(argv=None):
     except (OutputError, OSError) as e:
         print(f"membra: error: {e}", file=sys.stderr)
         return 4
+    except (KeyboardInterrupt, _Terminated) as e:
+        name = "SIGTERM" if isinstance(e, _Terminated) else "SIGINT"
+        print(f"\nmembra: sweep stopped ({name}); the scenes that finished are kept: run the same "
+              "command again to resume", file=sys.stderr)
+        return 143 if isinstance(e, _Terminated) else 130
     failed = int((table["error"] != "").sum())
     return 8 if failed else 0
 

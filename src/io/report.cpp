@@ -144,6 +144,26 @@ void report_cuts(const RunResult& r, json& j) {
 }
 
 // The unit of every number in the report.
+// The distinct stable forms of an exploration (simulation.explore), most often found first.
+void report_branches(const RunResult& r, json& j) {
+  j["explore"] = {
+      {"releases", r.explored}, {"unsettled", r.unsettled}, {"distinct_forms", r.branches.size()}};
+  j["branches"] = json::array();
+  for (size_t b = 0; b < r.branches.size(); ++b) {
+    const RunResult& f = r.branches[b].run;
+    j["branches"].push_back({{"index", b + 1},
+                             {"count", r.branches[b].releases.size()},
+                             {"releases", r.branches[b].releases},
+                             {"height", f.shape.height / units::mm},
+                             {"global_height", f.shape.global_height / units::mm},
+                             {"total_K", f.curvature.total},
+                             {"total_K_global", f.curvature_global.total},
+                             {"classification", f.form_global},
+                             {"energy", f.elastic_energy + f.bending_energy + f.gravity_energy},
+                             {"output", "branches/" + std::to_string(b + 1) + "/"}});
+  }
+}
+
 json report_units() {
   return {
       {"residual", "N"},
@@ -195,6 +215,12 @@ json report_units() {
       {"curvature.max_density", "1/mm^2"},
       {"shape.bbox_min", "mm"},
       {"shape.bbox_max", "mm"},
+      {"branches.height", "mm (as shape.height, of the branch's form)"},
+      {"branches.global_height", "mm"},
+      {"branches.total_K", "rad (as curvature.total)"},
+      {"branches.total_K_global", "rad (as curvature.global.total)"},
+      {"branches.energy", "J (as energy)"},
+      {"branches.releases", "which releases ended in the form (0: the scene's own imperfection)"},
       {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};
 }
 
@@ -209,6 +235,7 @@ json make_report(const Scene& scene, const RunResult& r) {
     if (r.curvature_map) report_curvature_map(*r.curvature_map, j);
     report_stability(r.stability, j);
     report_cuts(r, j);
+    if (r.explored > 0) report_branches(r, j);
   }
   j["units"] = report_units();
   return j;

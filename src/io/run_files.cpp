@@ -13,7 +13,7 @@ RunColors run_colors(const RunResult& r, const PictureOptions& opts) {
   const auto& mesh = r.prepared.membrane.sheet;
   for (double k : r.curvature.density) c.curvature.push_back(k * 1e-6);  // 1/m^2 to 1/mm^2
   for (double sv : vertex_stress(mesh.model, r.stress)) c.stress.push_back(sv * 1e-6);
-  std::tie(c.k_lo, c.k_hi) = symmetric_range(c.curvature, 1e-6);
+  std::tie(c.k_lo, c.k_hi) = symmetric_percentile_range(c.curvature, kCurvaturePercentile, 1e-6);
   if (opts.curvature_range.size() == 2)
     c.k_lo = opts.curvature_range[0], c.k_hi = opts.curvature_range[1];
   std::tie(c.s_lo, c.s_hi) = symmetric_range(c.stress, 1e-3);
@@ -32,6 +32,13 @@ void stage_run_files(const Scene& scene, const RunResult& r, const PictureOption
     write_ply(os, x, mesh.triangles, k_colors,
               {{"gaussian_curvature", c.curvature}, {"stress", c.stress}});
   });
+  // Each stable form an exploration found (simulation.explore), as a mesh.
+  for (size_t b = 0; b < r.branches.size(); ++b) {
+    const auto& xb = r.branches[b].run.prepared.membrane.state.x;
+    out.add("branches/" + std::to_string(b + 1) + "/final.obj", [&](std::ostream& os) {
+      write_obj(os, xb, r.branches[b].run.prepared.membrane.sheet.triangles);
+    });
+  }
   // The stencil at true scale (outlines traced every 0.25 mm).
   if (const PatternPtr pattern = scene_pattern(scene)) {
     const Box2 frame = scene_frame(scene);

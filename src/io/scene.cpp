@@ -38,7 +38,8 @@ const std::vector<std::string_view> kSimulationKeys = {"solver",
                                                        "max_iterations",
                                                        "tolerance",
                                                        "stop_when_converged",
-                                                       "path_tolerance"};
+                                                       "path_tolerance",
+                                                       "explore"};
 
 // Largest grid we accept; the robustness issue adds a memory-based limit.
 constexpr long kMaxNodesPerSide = 4096;
@@ -147,6 +148,12 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   sim.path_tolerance =
       std::max(sim.tolerance, s.number("path_tolerance", sim.tolerance, Bounds{0.0, 1.0, true}));
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
+  sim.explore = static_cast<int>(s.integer("explore", sim.explore, 1, 1000));
+  if (sim.explore > 1 && !sim.is_static())
+    throw InputError(s.pointer("explore"),
+                     "exploring the stable forms needs an equilibrium solver (static or newton), "
+                     "not " +
+                         solver);
 }
 
 }  // namespace

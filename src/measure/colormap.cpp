@@ -28,4 +28,17 @@ std::pair<double, double> symmetric_range(const std::vector<double>& values, dou
   return {-m, m};
 }
 
+std::pair<double, double> symmetric_percentile_range(const std::vector<double>& values, double q,
+                                                     double floor) {
+  std::vector<double> mags;
+  for (double v : values)
+    if (v != 0.0 && std::isfinite(v)) mags.push_back(std::abs(v));
+  if (mags.empty()) return {-floor, floor};
+  const auto k = static_cast<std::ptrdiff_t>(std::ceil(q * static_cast<double>(mags.size()))) - 1;
+  const auto at = mags.begin() + std::clamp<std::ptrdiff_t>(k, 0, std::ssize(mags) - 1);
+  std::nth_element(mags.begin(), at, mags.end());
+  const double m = std::max(floor, *at);
+  return {-m, m};
+}
+
 }  // namespace membra

@@ -164,4 +164,32 @@ void perturb(Membrane& m, double amplitude, std::uint64_t seed) {
   }
 }
 
+void perturb_randomly(Membrane& m, double amplitude, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::uniform_real_distribution<double> noise(-1.0, 1.0);
+  double c[3][3];  // weights of sin(a pi u) sin(b pi v), lower modes likelier
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) c[a][b] = gauss(rng) / ((a + 1) * (b + 1));
+  const GridSheet& g = m.sheet.grid;
+  const int n = m.sheet.model.num_particles();
+  std::vector<double> w(static_cast<size_t>(n), 0.0);
+  double peak = 0.0;
+  for (int p = 0; p < n; ++p) {
+    const auto [i, j] = g.node(p);
+    const double u = static_cast<double>(i) / (g.nx() - 1),
+                 v = static_cast<double>(j) / (g.ny() - 1);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        w[p] += c[a][b] * std::sin((a + 1) * std::numbers::pi * u) *
+                std::sin((b + 1) * std::numbers::pi * v);
+    peak = std::max(peak, std::abs(w[p]));
+  }
+  if (peak == 0.0) peak = 1.0;
+  for (int p = 0; p < n; ++p) {
+    if (m.sheet.model.pinned(p)) continue;
+    m.state.x(2, p) += amplitude * (w[p] / peak + 0.1 * noise(rng));
+  }
+}
+
 }  // namespace membra

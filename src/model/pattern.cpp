@@ -40,6 +40,7 @@ class Strip final : public Pattern {
       d2 = std::min(d2, segment_distance2(p, pts_[i], pts_[i + 1]));
     return std::sqrt(d2) - r_;
   }
+  bool field_is_distance() const override { return true; }
 
  private:
   std::vector<Vec2> pts_;
@@ -97,6 +98,7 @@ class Polygon final : public Pattern {
       d2 = std::min(d2, segment_distance2(p, v_[j], v_[i]));
     return contains(p) ? -std::sqrt(d2) : std::sqrt(d2);
   }
+  bool field_is_distance() const override { return true; }
 
  private:
   std::vector<Vec2> v_;
@@ -154,20 +156,35 @@ class Raster final : public Pattern {
 class Union final : public Pattern {
  public:
   explicit Union(std::vector<PatternPtr> parts) : parts_(std::move(parts)) {
-    for (const auto& p : parts_) box_.extend(p->bounds());
+    for (const auto& p : parts_) {
+      part_boxes_.push_back(p->bounds());
+      box_.extend(p->bounds());
+    }
   }
   bool contains(const Vec2& p) const override {
     return std::any_of(parts_.begin(), parts_.end(), [&](const auto& q) { return q->contains(p); });
   }
   double field(const Vec2& p) const override {
+    // The minimum of the parts' fields; a distance part farther off than the minimum so far
+    // cannot lower it (its field is at least its box's distance), so it is not evaluated:
+    // the same value, much faster for stencils of many pieces.
     double f = std::numeric_limits<double>::infinity();
-    for (const auto& q : parts_) f = std::min(f, q->field(p));
+    for (const auto& q : parts_)
+      if (!q->field_is_distance()) f = std::min(f, q->field(p));
+    for (size_t i = 0; i < parts_.size(); ++i) {
+      if (!parts_[i]->field_is_distance()) continue;
+      const Box2& b = part_boxes_[i];
+      const Vec2 out = (b.min - p).cwiseMax(p - b.max).cwiseMax(0.0);
+      if (out.squaredNorm() > 0.0 && out.norm() >= f) continue;
+      f = std::min(f, parts_[i]->field(p));
+    }
     return f;
   }
   Box2 bounds() const override { return box_; }
 
  private:
   std::vector<PatternPtr> parts_;
+  std::vector<Box2> part_boxes_;
   Box2 box_;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "membra/core/stop_request.hpp"
 #include "membra/measure/stress.hpp"
 #include "membra/solve/solver.hpp"
 
@@ -28,12 +29,13 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
   o.dt = sim.dt;
   o.steps = sim.steps;
   o.stop_when_converged = sim.stop_when_converged;
-  if (progress)
-    o.progress = [&](const Progress& pr) {
-      Progress q = pr;
-      q.stage = stage;
-      progress(q);
-    };
+  // Every solve reports progress, so that a requested stop (core/stop_request.hpp) is seen.
+  o.progress = [&](const Progress& pr) {
+    Progress q = pr;
+    q.stage = stage;
+    throw_if_stop_requested(q);
+    if (progress) progress(q);
+  };
   if (!sim.is_static() && recorder && recorder->wanted > 0) {
     // Evenly over the run, at the first check past each frame time.
     const long every = std::max<long>(1, o.steps / recorder->wanted);

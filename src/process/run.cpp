@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "membra/process/explore.hpp"
 #include "membra/process/path.hpp"
 #include "membra/process/steps.hpp"
 #include "membra/process/summary.hpp"
@@ -57,7 +58,9 @@ RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
   if (scene.protocol.empty()) run.solve();
   for (const ProtocolStep& step : scene.protocol)
     if (!run.apply(step)) break;
-  return run.finish();
+  RunResult r = run.finish();
+  if (scene.simulation.explore > 1 && !r.solve.diverged) explore_branches(scene, r, progress);
+  return r;
 }
 
 }  // namespace membra

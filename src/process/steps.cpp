@@ -23,6 +23,14 @@ Path growth_path(Membrane& m, std::vector<double> ratios, int increments) {
           }};
 }
 
+// The path's symmetry-breaking imperfection, before its first increment.
+void perturb_path(Membrane& m, const PathSettings& path) {
+  if (path.random_imperfection)
+    perturb_randomly(m, path.perturbation, path.seed);
+  else
+    perturb(m, path.perturbation, path.seed);
+}
+
 Path at_once() {
   Path p;
   p.kind = Path::Kind::at_once;
@@ -54,7 +62,7 @@ Path apply_impregnate(Membrane& m, const ImpregnateStep& step, const std::string
 Path apply_release(Membrane& m, const ReleaseStep& step, StepEffects&) {
   // The latex returns to its natural length along the path (time stepping: at once, from the
   // stretched state, as the paper's tool does).
-  perturb(m, step.path.perturbation, step.path.seed);
+  perturb_path(m, step.path);
   begin_release(m);
   return {Path::Kind::gradual, step.path.increments,
           [&m](double t) { set_release_level(m, 1.0 - t); }};
@@ -67,7 +75,7 @@ Path apply_grow(Membrane& m, const GrowStep& step, const std::string& pointer, S
   } catch (const std::invalid_argument& e) {
     throw InputError(pointer + "/factor", e.what());
   }
-  perturb(m, step.path.perturbation, step.path.seed);
+  perturb_path(m, step.path);
   return growth_path(m, std::move(ratios), step.path.increments);
 }
 
@@ -84,7 +92,7 @@ Path apply_curvature_map(Membrane& m, const CurvatureMapStep& step, const std::s
   cm.message = cf.message;
   out.curvature_map = cm;
   std::vector<double> ratios = conformal_growth(model, cf.u);
-  perturb(m, step.path.perturbation, step.path.seed);
+  perturb_path(m, step.path);
   return growth_path(m, std::move(ratios), step.path.increments);
 }
 
@@ -102,7 +110,7 @@ Path apply_add_springs(Membrane& m, const AddSpringsStep& step, const std::strin
   const Springs& sp = m.sheet.model.springs;
   for (int k = first; k < sp.size(); ++k)
     start.push_back((m.state.x.col(sp.b[k]) - m.state.x.col(sp.a[k])).norm());
-  perturb(m, step.path.perturbation, step.path.seed);
+  perturb_path(m, step.path);
   return {Path::Kind::gradual, step.path.increments,
           [&m, first, start = std::move(start), factor = spec.rest_factor](double t) {
             set_added_springs_level(m, first, start, factor, t);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "membra/measure/colormap.hpp"
+#include "membra/measure/shape.hpp"
 #include "membra/render/renderer.hpp"
 
 namespace membra {
@@ -70,6 +71,47 @@ void stage_frames(const RunResult& r, const Camera& camera, Renderer& renderer, 
   add_png(out, "contact_sheet.png", sheet);
 }
 
+// The global form (wrinkles finer than the window averaged out, measure/shape.hpp) coloured by
+// its own Gaussian curvature: where the bowl reads as a bowl.
+void stage_global_form(const RunResult& r, const PictureOptions& opts, const Camera& camera,
+                       Renderer& renderer, OutputSet& out) {
+  const auto& mesh = r.prepared.membrane.sheet;
+  const Points global = global_form(r.prepared.membrane.state.x, mesh.model.reference);
+  if (global.cols() != r.prepared.membrane.state.x.cols()) return;
+  std::vector<double> k, interior;
+  for (double v : r.curvature_global.density) k.push_back(v * 1e-6);  // 1/m^2 to 1/mm^2
+  // The range from the particles a window (1/8 of the sheet) or more inside the edge: the
+  // averaging window is cut off at the edge, which bends the global form's rim more sharply
+  // than the form itself.
+  const GridSheet& g = mesh.grid;
+  for (int p = 0; p < g.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    if (8 * i >= g.nx() && 8 * i <= 7 * g.nx() && 8 * j >= g.ny() && 8 * j <= 7 * g.ny())
+      interior.push_back(k[static_cast<size_t>(p)]);
+  }
+  auto [lo, hi] = symmetric_percentile_range(interior.empty() ? k : interior,
+                                             kCurvaturePercentile, 1e-6);
+  if (opts.curvature_range.size() == 2) lo = opts.curvature_range[0], hi = opts.curvature_range[1];
+  const Legend legend{"Global form: Gaussian curvature", "1/mm^2", lo, hi};
+  add_png(out, "curvature_global.png",
+          renderer.render(global, mesh.triangles, colorize(k, lo, hi), camera, &legend));
+}
+
+// Each stable form of an exploration, on the main picture's curvature range.
+void stage_branches(const RunResult& r, const RunColors& c, const Camera& camera,
+                    Renderer& renderer, OutputSet& out) {
+  for (size_t b = 0; b < r.branches.size(); ++b) {
+    const RunResult& f = r.branches[b].run;
+    std::vector<double> k;
+    for (double v : f.curvature.density) k.push_back(v * 1e-6);
+    const Legend legend{"Branch " + std::to_string(b + 1) + ": Gaussian curvature", "1/mm^2",
+                        c.k_lo, c.k_hi};
+    add_png(out, "branches/" + std::to_string(b + 1) + "/curvature.png",
+            renderer.render(f.prepared.membrane.state.x, f.prepared.membrane.sheet.triangles,
+                            colorize(k, c.k_lo, c.k_hi), camera, &legend));
+  }
+}
+
 }  // namespace
 
 std::string stage_run_pictures(const Scene& scene, const RunResult& r, const PictureOptions& opts,
@@ -89,7 +131,12 @@ std::string stage_run_pictures(const Scene& scene, const RunResult& r, const Pic
                        const Legend& legend) {
       add_png(out, file, renderer.render(x, mesh.triangles, colors, camera, &legend));
     };
-    picture("curvature.png", k_colors, {"Gaussian curvature", "1/mm^2", c.k_lo, c.k_hi});
+    const bool fixed = opts.curvature_range.size() == 2;
+    picture("curvature.png", k_colors,
+            {fixed ? "Gaussian curvature" : "Gaussian curvature (95% in range)", "1/mm^2", c.k_lo,
+             c.k_hi});
+    stage_global_form(r, opts, camera, renderer, out);
+    stage_branches(r, c, camera, renderer, out);
     picture("stress.png", colorize(c.stress, c.s_lo, c.s_hi),
             {"Stress (tension red)", "MPa", c.s_lo, c.s_hi});
     if (r.curvature_map) stage_curvature_map(r, c, opts, camera, out);

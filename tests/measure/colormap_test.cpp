@@ -30,5 +30,17 @@ TEST(Colormap, SymmetricRangeCoversEveryValueWithAFloor) {
   expect_rgb(c[1], 1, 0, 0);
 }
 
+TEST(Colormap, PercentileRangeLetsAFewSpikesSaturate) {
+  // 95 values of magnitude 1..95 and 5 spikes of 1000, with rim zeros: the 95th percentile of
+  // the nonzero magnitudes is 95, the spikes saturate.
+  std::vector<double> v(20, 0.0);
+  for (int i = 1; i <= 95; ++i) v.push_back(i % 2 ? i : -i);
+  for (int i = 0; i < 5; ++i) v.push_back(-1000.0);
+  EXPECT_EQ(symmetric_percentile_range(v, 0.95, 1e-6), std::make_pair(-95.0, 95.0));
+  EXPECT_EQ(symmetric_percentile_range(v, 1.0, 1e-6), std::make_pair(-1000.0, 1000.0));
+  EXPECT_EQ(symmetric_percentile_range({0.0, 0.0}, 0.95, 0.5), std::make_pair(-0.5, 0.5));
+  EXPECT_EQ(symmetric_percentile_range({1e-9}, 0.95, 1e-6), std::make_pair(-1e-6, 1e-6));
+}
+
 }  // namespace
 }  // namespace membra

@@ -1,7 +1,8 @@
 #pragma once
 // Writes a run's output files all-or-nothing: each file goes to a temporary name in the output
 // directory, and only commit() renames them into place. If anything fails before commit(), the
-// destructor removes the temporaries, so a failed run leaves no partial or stale-looking files.
+// destructor removes the temporaries (and the folders made for them), so a failed or interrupted
+// run leaves no partial or stale-looking files.
 #include <filesystem>
 #include <functional>
 #include <ostream>
@@ -27,7 +28,8 @@ class OutputSet {
   OutputSet& operator=(const OutputSet&) = delete;
 
   // Stages file `name` by calling write(stream). Throws OutputError naming the file if
-  // writing fails (disk full, I/O error).
+  // writing fails (disk full, I/O error), Interrupted if a stop was requested
+  // (core/stop_request.hpp).
   void add(const std::string& name, const std::function<void(std::ostream&)>& write);
   // Renames every staged file to its final name.
   void commit();
@@ -36,6 +38,7 @@ class OutputSet {
  private:
   std::filesystem::path dir_;
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // tmp, final
+  std::vector<std::filesystem::path> created_dirs_;                              // outermost first
   bool committed_ = false;
 };
 

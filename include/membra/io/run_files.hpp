@@ -14,9 +14,13 @@ struct PictureOptions {
   std::vector<double> stress_range;     // [lo, hi] in MPa, or empty for automatic
 };
 
+// The share of the particles' |K| the default curvature colour range covers: the rest, sharp
+// wrinkles between resin pieces, saturate instead of washing the form out to green.
+inline constexpr double kCurvaturePercentile = 0.95;
+
 // A run's values per particle in the outputs' units, and the colour ranges: symmetric about 0,
-// so that green is flat / unstressed (at least +-1e-6 1/mm^2, radius 1 m; +-1e-3 MPa), unless
-// the user fixed them.
+// so that green is flat / unstressed (curvature: kCurvaturePercentile of |K|, at least +-1e-6
+// 1/mm^2, radius 1 m; stress: every value, at least +-1e-3 MPa), unless the user fixed them.
 struct RunColors {
   std::vector<double> curvature;  // 1/mm^2
   std::vector<double> stress;     // MPa
@@ -24,8 +28,9 @@ struct RunColors {
 };
 RunColors run_colors(const RunResult& r, const PictureOptions& opts);
 
-// Stages final.obj, final.ply (curvature colours, curvature and stress properties) and, when
-// the scene has resin, the stencil pattern.svg and pattern.dxf, in `out` (not committed).
+// Stages final.obj, final.ply (curvature colours, curvature and stress properties), each
+// explored branch's branches/N/final.obj and, when the scene has resin, the stencil pattern.svg
+// and pattern.dxf, in `out` (not committed).
 void stage_run_files(const Scene& scene, const RunResult& r, const PictureOptions& opts,
                      OutputSet& out);
 

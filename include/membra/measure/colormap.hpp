@@ -21,4 +21,10 @@ std::vector<Rgb> colorize(const std::vector<double>& values, double lo, double h
 // zero (flat, unstressed) and round-off on a flat sheet stays green.
 std::pair<double, double> symmetric_range(const std::vector<double>& values, double floor);
 
+// A range symmetric about 0 covering the share `q` (e.g. 0.95) of the nonzero values by
+// magnitude, at least [-floor, floor]: a few sharp wrinkles then saturate instead of washing the
+// broad form out to green. Zeros (the rim, where the curvature is not defined) are left out.
+std::pair<double, double> symmetric_percentile_range(const std::vector<double>& values, double q,
+                                                     double floor);
+
 }  // namespace membra

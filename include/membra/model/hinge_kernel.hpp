@@ -11,9 +11,6 @@
 
 #include "membra/core/vec.hpp"
 
-#include <unsupported/Eigen/AutoDiff>
-#include "membra/model/psd_projection.hpp"
-
 namespace membra {
 
 struct HingeEval {
@@ -71,23 +68,10 @@ std::array<Eigen::Matrix<T, 3, 1>, 4> hinge_theta_gradient(
 // Hessian of theta over (x0, x1, x2, x3), 12 x 12, 1/m^2: the exact derivative of the analytic
 // gradient above, taken in one forward-mode pass with 12-component dual numbers (no
 // differencing step, so exact to round-off), times `moment` (so the Hessian of the hinge's
-// energy), symmetrized; with `project` the closest positive semi-definite matrix.
+// energy), symmetrized; with `project` the closest positive semi-definite matrix. Defined in
+// hinge_kernel.cpp: the dual numbers are costly to compile, once is enough.
 using HingeHessian = Eigen::Matrix<double, 12, 12>;
-inline HingeHessian hinge_hessian(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
-                                  double moment, bool project = false) {
-  using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, 12, 1>>;
-  using V = Eigen::Matrix<Dual, 3, 1>;
-  const std::array<const Vec3*, 4> p = {&x0, &x1, &x2, &x3};
-  std::array<V, 4> x;
-  for (int k = 0; k < 4; ++k)
-    for (int c = 0; c < 3; ++c)
-      x[static_cast<size_t>(k)][c] = Dual((*p[static_cast<size_t>(k)])[c], 12, 3 * k + c);
-  const std::array<V, 4> g = hinge_theta_gradient(x);
-  HingeHessian h;
-  for (int r = 0; r < 12; ++r)
-    h.row(r) = g[static_cast<size_t>(r / 3)][r % 3].derivatives().transpose();
-  const HingeHessian sym = (0.5 * moment) * (h + h.transpose());  // not in place: aliasing
-  return project ? project_psd(sym) : sym;
-}
+HingeHessian hinge_hessian(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
+                           double moment, bool project = false);
 
 }  // namespace membra

@@ -69,6 +69,10 @@ void set_release_level(Membrane& m, double level);
 // Deterministic out-of-plane perturbation that breaks the symmetry of a flat sheet: a smooth
 // bump of `amplitude` (m) towards the resin side plus 10 % seeded noise.
 void perturb(Membrane& m, double amplitude, std::uint64_t seed);
+// Another imperfection, for exploring the stable forms a pattern can take (simulation.explore):
+// a seeded mix of the sheet's nine lowest sine modes (either sign, twist included), scaled so its
+// largest deflection is `amplitude` (m), plus 10 % seeded noise.
+void perturb_randomly(Membrane& m, double amplitude, std::uint64_t seed);
 
 // Rest length and stiffness of one spring from the composite rule (docs/process.md).
 void update_spring(Membrane& m, int s);

@@ -34,6 +34,9 @@ class Pattern {
   // A field that is negative inside, positive outside and crosses zero smoothly on the outline
   // (a signed distance where one is cheap), so outlines can be traced between samples.
   virtual double field(const Vec2& p) const = 0;
+  // True when field() outside bounds() is at least the distance to bounds() (a true signed
+  // distance): a union then skips the parts too far away to be its nearest.
+  virtual bool field_is_distance() const { return false; }
 };
 
 using PatternPtr = std::shared_ptr<const Pattern>;

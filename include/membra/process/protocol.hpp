@@ -27,6 +27,9 @@ struct PathSettings {
   int increments = 10;
   double perturbation = 0.2e-3;  // m
   std::uint64_t seed = 1;
+  // The bump towards the resin side (perturb), or a random mix of low modes (perturb_randomly),
+  // which simulation.explore uses for its further releases.
+  bool random_imperfection = false;
 };
 
 // The frame pins the sheet's held edges and stretches it by lambda.

@@ -44,6 +44,8 @@ struct CurvatureMapResult {
   CurvatureMatch match;
 };
 
+struct Branch;
+
 struct RunResult {
   PreparedScene prepared;  // prepared.membrane.state holds the final state
   SolveReport solve;       // totals over all solves; residual and convergence of the last
@@ -65,6 +67,18 @@ struct RunResult {
   std::vector<StressConcentration> concentrations;  // stress at each feature, final state
   std::optional<CurvatureMapResult> curvature_map;  // scenes with a curvature_map step
   StabilityReport stability;                        // of the final state
+  // simulation.explore > 1: the distinct stable forms its releases ended in (explore.hpp),
+  // most often found first; empty otherwise. This result is release 0's (the scene's own
+  // imperfection), one of them when it is stable.
+  std::vector<Branch> branches;
+  int explored = 0;   // releases made (0: no exploration)
+  int unsettled = 0;  // of them, ended unconverged or at a saddle (in no branch)
+};
+
+// One stable form found by exploring, with the first release that ended in it.
+struct Branch {
+  RunResult run;              // that release's result (its own branches empty)
+  std::vector<int> releases;  // every release that ended in this form (0: the scene's own)
 };
 
 }  // namespace membra

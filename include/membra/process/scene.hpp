@@ -32,6 +32,9 @@ struct SimulationSpec {
   // (docs/performance.md, "Looser paths").
   double path_tolerance = 1e-6;
   bool stop_when_converged = true;
+  // Releases of the scene, each with another seeded imperfection, to find every stable form it
+  // can take (explore.hpp); 1: the scene's own release only.
+  int explore = 1;
 
   // True for the equilibrium solvers (static, newton), false for time stepping.
   bool is_static() const { return solver_info(solver).equilibrium; }

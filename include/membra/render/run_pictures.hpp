@@ -1,6 +1,7 @@
 #pragma once
-// The pictures of a finished run: curvature.png, stress.png, pattern.png, and when the scene
-// asks for them curvature_map.png, the animation frames and their contact sheet.
+// The pictures of a finished run: curvature.png, curvature_global.png (the window-averaged
+// global form), stress.png, pattern.png, and when the scene asks for them curvature_map.png, the
+// animation frames and their contact sheet, and each explored branch's curvature.png.
 #include <string>
 
 #include "membra/io/output_set.hpp"
