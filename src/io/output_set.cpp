@@ -6,6 +6,9 @@
 
 #include "membra/core/stop_request.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace membra {
@@ -14,6 +17,45 @@ namespace fs = std::filesystem;
 namespace {
 std::string tmp_suffix() {
   return ".tmp-" + std::to_string(::getpid());
+}
+
+const char* const kLockName = ".membra.lock";
+
+// The pid another writer left in the lock file, for the message.
+std::string lock_holder(int fd) {
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+  return n > 0 ? std::string(buf, static_cast<size_t>(n)) : std::string("?");
+}
+
+// Takes the directory's lock: an exclusive flock on DIR/.membra.lock, without waiting. Returns
+// the file descriptor, or throws OutputError naming the other writer. Retries when the file was
+// removed between its opening and the lock (its last holder leaving).
+int take_lock(const fs::path& dir) {
+  const fs::path file = dir / kLockName;
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw OutputError("output directory " + dir.string() + ": cannot create its lock");
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      const std::string pid = lock_holder(fd);
+      ::close(fd);
+      throw OutputError("output directory " + dir.string() + ": another membra (pid " + pid +
+                        ") is writing its results there; wait for it to finish or choose "
+                        "another output directory");
+    }
+    struct stat held {
+    }, named{};
+    if (::fstat(fd, &held) == 0 && ::stat(file.c_str(), &named) == 0 &&
+        held.st_ino == named.st_ino && held.st_dev == named.st_dev) {
+      const std::string pid = std::to_string(::getpid());
+      if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {
+        // The pid is only for the other writer's message.
+      }
+      return fd;
+    }
+    ::close(fd);  // locked a file already unlinked: take the new one
+  }
+  throw OutputError("output directory " + dir.string() + ": cannot take its lock");
 }
 }  // namespace
 
@@ -30,11 +72,18 @@ OutputSet::OutputSet(fs::path dir) : dir_(std::move(dir)) {
     if (!out) throw OutputError("output directory " + dir_.string() + ": not writable");
   }
   fs::remove(probe, ec);
+  // One writer at a time: a second run into the same folder is refused, so that two sets of
+  // results never interleave (docs/errors.md).
+  lock_fd_ = take_lock(dir_);
 }
 
 OutputSet::~OutputSet() {
-  if (committed_) return;
   std::error_code ec;
+  if (lock_fd_ >= 0) {
+    fs::remove(dir_ / kLockName, ec);  // unlinked while still held: see take_lock
+    ::close(lock_fd_);
+  }
+  if (committed_) return;
   for (const auto& [tmp, final_path] : staged_) fs::remove(tmp, ec);
   // The folders made for staged files (frames/), deepest first, if nothing else is in them.
   for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it)

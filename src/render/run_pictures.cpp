@@ -89,8 +89,8 @@ void stage_global_form(const RunResult& r, const PictureOptions& opts, const Cam
     if (8 * i >= g.nx() && 8 * i <= 7 * g.nx() && 8 * j >= g.ny() && 8 * j <= 7 * g.ny())
       interior.push_back(k[static_cast<size_t>(p)]);
   }
-  auto [lo, hi] = symmetric_percentile_range(interior.empty() ? k : interior,
-                                             kCurvaturePercentile, 1e-6);
+  auto [lo, hi] =
+      symmetric_percentile_range(interior.empty() ? k : interior, kCurvaturePercentile, 1e-6);
   if (opts.curvature_range.size() == 2) lo = opts.curvature_range[0], hi = opts.curvature_range[1];
   const Legend legend{"Global form: Gaussian curvature", "1/mm^2", lo, hi};
   add_png(out, "curvature_global.png",

@@ -2,6 +2,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "test_util.hpp"
@@ -54,6 +56,34 @@ TEST_F(OutputSetTest, UncreatableDirectoryIsAnOutputError) {
   fs::create_directories(dir);
   std::ofstream(dir / "file") << "x";
   EXPECT_THROW(OutputSet(dir / "file" / "sub"), OutputError);
+}
+
+TEST_F(OutputSetTest, AFolderHasOneWriterAtATime) {
+  {
+    OutputSet first(dir);
+    first.add("a.txt", [](std::ostream& os) { os << "first"; });
+    try {
+      OutputSet second(dir);
+      FAIL() << "a second writer was let in";
+    } catch (const OutputError& e) {
+      EXPECT_NE(std::string(e.what()).find("another membra (pid " + std::to_string(getpid())),
+                std::string::npos)
+          << e.what();
+    }
+    first.commit();
+  }
+  EXPECT_EQ(files_in(dir), 1) << "the lock file goes with its writer";
+  OutputSet third(dir);  // the folder is free again
+}
+
+TEST_F(OutputSetTest, DroppedFoldersMadeForStagedFilesGoToo) {
+  fs::create_directories(dir);
+  {
+    OutputSet out(dir);
+    out.add("frames/f1.png", [](std::ostream& os) { os << "x"; });
+    out.add("branches/1/final.obj", [](std::ostream& os) { os << "y"; });
+  }
+  EXPECT_EQ(files_in(dir), 0);
 }
 
 }  // namespace

@@ -20,8 +20,9 @@ class OutputError : public std::runtime_error {
 
 class OutputSet {
  public:
-  // Creates `dir` if needed and checks it is writable. Throws OutputError naming the
-  // directory when it cannot be created or written.
+  // Creates `dir` if needed, checks it is writable and takes its lock (DIR/.membra.lock, an
+  // flock held while the set lives). Throws OutputError naming the directory when it cannot be
+  // created or written, or when another OutputSet (another membra) holds it.
   explicit OutputSet(std::filesystem::path dir);
   ~OutputSet();
   OutputSet(const OutputSet&) = delete;
@@ -39,6 +40,7 @@ class OutputSet {
   std::filesystem::path dir_;
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // tmp, final
   std::vector<std::filesystem::path> created_dirs_;                              // outermost first
+  int lock_fd_ = -1;  // DIR/.membra.lock, held while the set lives
   bool committed_ = false;
 };
 

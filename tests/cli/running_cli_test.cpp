@@ -1,8 +1,10 @@
-// Ctrl-C and SIGTERM during `membra run`: the run stops within a second, says where it was,
-// writes nothing (no staged file left behind), leaves an earlier result as it was, and exits
-// 128 + the signal (docs/cli.md).
+// `membra run` as a process among others: Ctrl-C and SIGTERM stop it within a second, saying
+// where it was, writing nothing (no staged file left behind), leaving an earlier result as it
+// was, exiting 128 + the signal; a second run into the same folder is refused while the first
+// writes there (docs/errors.md).
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -77,7 +79,7 @@ std::vector<std::string> files_in(const fs::path& dir) {
   return names;
 }
 
-class Interrupt : public ::testing::Test {
+class RunningCli : public ::testing::Test {
  protected:
   fs::path dir = unique_temp_dir();
   void SetUp() override {
@@ -86,6 +88,7 @@ class Interrupt : public ::testing::Test {
     std::ofstream(dir / "out" / "report.json") << "an earlier result\n";
   }
   void TearDown() override { fs::remove_all(dir); }
+  int second_code = -1;
   void expect_untouched() {
     EXPECT_EQ(files_in(dir / "out"), std::vector<std::string>{"report.json"});
     std::ifstream in(dir / "out" / "report.json");
@@ -97,7 +100,7 @@ class Interrupt : public ::testing::Test {
 
 const std::string kExp3 = std::string(MEMBRA_SOURCE_DIR) + "/examples/exp3_parallel.json";
 
-TEST_F(Interrupt, CtrlCStopsARunWithinASecondAndWritesNothing) {
+TEST_F(RunningCli, CtrlCStopsARunWithinASecondAndWritesNothing) {
   // exp3 at 41 x 41 with the static solver: minutes of release.
   const auto start = Clock::now();
   const auto after_1_5_s = [&] { return Clock::now() - start > std::chrono::milliseconds(1500); };
@@ -111,18 +114,43 @@ TEST_F(Interrupt, CtrlCStopsARunWithinASecondAndWritesNothing) {
   expect_untouched();
 }
 
-TEST_F(Interrupt, SigtermWhileTheOutputsAreStagedLeavesNoStagedFile) {
+TEST_F(RunningCli, SigtermWhileTheOutputsAreStagedLeavesNoStagedFile) {
   // A tiny sheet (solved at once) with the largest pictures: the run spends its time staging.
   const Stopped s = run_and_signal(
       {"run", kExp3, "--out", (dir / "out").string(), "--quiet", "--set", "sheet.resolution=[9,9]",
        "--set", "output.image_size=[8192,6144]", "--set", "output.frames=6"},
-      [&] { return files_in(dir / "out").size() > 1; },  // the first staged file is there
+      [&] {  // the first staged file (report.json's, under a temporary name) is there
+        for (const auto& f : files_in(dir / "out"))
+          if (f.starts_with("report.json.tmp")) return true;
+        return false;
+      },
       SIGTERM, dir / "log");
   EXPECT_EQ(s.code, 143) << s.stderr_text;
   EXPECT_LT(s.seconds, 3.0);  // the picture being encoded is finished first
   EXPECT_NE(s.stderr_text.find("terminated (SIGTERM) while writing the outputs"), std::string::npos)
       << s.stderr_text;
   expect_untouched();
+}
+
+TEST_F(RunningCli, ASecondRunIntoTheSameFolderIsRefusedWhileTheFirstWrites) {
+  const fs::path out = dir / "out";
+  const auto second_refused = [&] {
+    if (files_in(out).size() < 2) return false;  // the first holds the folder's lock
+    const int code = std::system((std::string(MEMBRA_CLI) + " run " + kExp3 + " --quiet --out " +
+                                  out.string() + " 2>" + (dir / "second.log").string())
+                                     .c_str());
+    second_code = WIFEXITED(code) ? WEXITSTATUS(code) : -1;
+    return true;
+  };
+  const Stopped s = run_and_signal({"run", kExp3, "--out", out.string(), "--quiet"}, second_refused,
+                                   SIGINT, dir / "log");
+  EXPECT_EQ(second_code, 4);
+  std::ifstream in(dir / "second.log");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("another membra (pid"), std::string::npos) << text.str();
+  EXPECT_EQ(s.code, 130) << s.stderr_text;
+  expect_untouched();  // neither wrote: the first was stopped, the second refused
 }
 
 }  // namespace
