@@ -36,6 +36,8 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
   j["increments"] = s.increments;
   j["increments_halved"] = s.increments_halved;
   j["wall_seconds"] = s.wall_seconds;
+  j["max_seconds"] = scene.simulation.max_seconds;
+  j["out_of_time"] = r.out_of_time;
   j["simulated_seconds"] = r.prepared.membrane.state.time;
   j["particles"] = m.num_particles();
   j["springs"] = m.springs.size();
@@ -169,6 +171,7 @@ json report_units() {
       {"residual", "N"},
       {"residual_relative", "1 (residual / (k_stretch x grid spacing))"},
       {"wall_seconds", "s"},
+      {"max_seconds", "s (simulation.max_seconds, the run's wall-time budget; 0: none)"},
       {"simulated_seconds", "s"},
       {"stiffness", "N/mm"},
       {"energy", "J (elastic + bending + gravitational potential)"},

@@ -39,7 +39,8 @@ const std::vector<std::string_view> kSimulationKeys = {"solver",
                                                        "tolerance",
                                                        "stop_when_converged",
                                                        "path_tolerance",
-                                                       "explore"};
+                                                       "explore",
+                                                       "max_seconds"};
 
 // Largest grid we accept; the robustness issue adds a memory-based limit.
 constexpr long kMaxNodesPerSide = 4096;
@@ -149,6 +150,7 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
       std::max(sim.tolerance, s.number("path_tolerance", sim.tolerance, Bounds{0.0, 1.0, true}));
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
   sim.explore = static_cast<int>(s.integer("explore", sim.explore, 1, 1000));
+  sim.max_seconds = s.number("max_seconds", sim.max_seconds, Bounds::between(0.0, 1e7));
   if (sim.explore > 1 && !sim.is_static())
     throw InputError(s.pointer("explore"),
                      "exploring the stable forms needs an equilibrium solver (static or newton), "

@@ -29,6 +29,11 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
   o.dt = sim.dt;
   o.steps = sim.steps;
   o.stop_when_converged = sim.stop_when_converged;
+  if (p.deadline) {  // what is left of the run's budget; a spent budget stops at the first check
+    const double left =
+        std::chrono::duration<double>(*p.deadline - std::chrono::steady_clock::now()).count();
+    o.max_seconds = std::max(left, 1e-9);
+  }
   // Every solve reports progress, so that a requested stop (core/stop_request.hpp) is seen.
   o.progress = [&](const Progress& pr) {
     Progress q = pr;

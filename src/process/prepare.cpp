@@ -21,7 +21,7 @@ PreparedScene prepare_benchmark(const Scene& scene) {
               std::move(b.triangles),
               LatticeStiffness{1.0, 0.5, 0.1},
               scene.sheet};
-  PreparedScene p{make_membrane(std::move(sheet)), 0, 1.0};
+  PreparedScene p{make_membrane(std::move(sheet)), 0, 1.0, std::nullopt};
   p.membrane.state = b.start;
   p.membrane.sheet.model.gravity = Vec3::Zero();
   p.membrane.sheet.model.velocity_damping = scene.simulation.damping;
@@ -52,7 +52,8 @@ int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScen
 PreparedScene prepare_scene(const Scene& scene) {
   check_memory(scene, machine_memory());  // before allocating anything
   if (scene.benchmark_n > 0) return prepare_benchmark(scene);
-  PreparedScene p{make_membrane(build_sheet(scene.grid, scene.sheet, outline_mask(scene))), 0, 0.0};
+  PreparedScene p{make_membrane(build_sheet(scene.grid, scene.sheet, outline_mask(scene))), 0, 0.0,
+                  std::nullopt};
   p.pinned = pin(scene.pins, "/pins", p);
   Model& m = p.membrane.sheet.model;
   m.gravity = Vec3(0.0, 0.0, -scene.simulation.gravity);

@@ -1,6 +1,8 @@
 #include "membra/process/run.hpp"
 
+#include <chrono>
 #include <stdexcept>
+#include <string>
 
 #include "membra/process/explore.hpp"
 #include "membra/process/path.hpp"
@@ -8,10 +10,26 @@
 #include "membra/process/summary.hpp"
 
 namespace membra {
+namespace {
+
+// A run whose budget ran out says so, first, in its message.
+void note_budget(const Scene& scene, RunResult& r) {
+  const auto& deadline = r.prepared.deadline;
+  r.out_of_time = deadline && std::chrono::steady_clock::now() >= *deadline && !r.solve.converged;
+  if (r.out_of_time)
+    r.solve.message = "stopped at the wall-time budget (simulation.max_seconds = " +
+                      std::to_string(scene.simulation.max_seconds) + " s): " + r.solve.message;
+}
+
+}  // namespace
 
 SceneRun::SceneRun(const Scene& scene, ProgressFn progress)
     : scene_(scene), progress_(std::move(progress)) {
   r_.prepared = prepare_scene(scene);
+  if (scene.simulation.max_seconds > 0.0)
+    r_.prepared.deadline = std::chrono::steady_clock::now() +
+                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                               std::chrono::duration<double>(scene.simulation.max_seconds));
   recorder_ = FrameRecorder{scene.output.frames, &r_.frames};
 }
 
@@ -44,11 +62,13 @@ bool SceneRun::solve() {
 
 RunResult SceneRun::result() const {
   RunResult r = r_;
+  note_budget(scene_, r);
   if (!r.solve.diverged) summarize_run(r, curvature_field_);
   return r;
 }
 
 RunResult SceneRun::finish() {
+  note_budget(scene_, r_);
   if (!r_.solve.diverged) summarize_run(r_, curvature_field_);
   return std::move(r_);
 }

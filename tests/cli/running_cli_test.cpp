@@ -1,7 +1,7 @@
 // `membra run` as a process among others: Ctrl-C and SIGTERM stop it within a second, saying
 // where it was, writing nothing (no staged file left behind), leaving an earlier result as it
 // was, exiting 128 + the signal; a second run into the same folder is refused while the first
-// writes there (docs/errors.md).
+// writes there; a full disk ends the run with exit 4 and nothing written (docs/errors.md).
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -32,14 +33,21 @@ struct Stopped {
   std::string stderr_text;
 };
 
-// Starts membra with `args` (stderr to a file), sends `signal` once `ready()` holds (checked
-// every 5 ms, at most 60 s), and waits for it to end.
+// Starts membra with `args` (stderr to a file), sends `signal` (0: none) once `ready()` holds
+// (checked every 5 ms, at most 60 s), and waits for it to end. `file_limit` > 0 caps the size of
+// every file it writes (RLIMIT_FSIZE, with SIGXFSZ ignored so that writes past it fail as on a
+// full disk).
 Stopped run_and_signal(const std::vector<std::string>& args, const std::function<bool()>& ready,
-                       int signal, const fs::path& log) {
+                       int signal, const fs::path& log, rlim_t file_limit = 0) {
   const pid_t pid = fork();
   if (pid == 0) {
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, STDERR_FILENO);
+    if (file_limit > 0) {
+      std::signal(SIGXFSZ, SIG_IGN);
+      const rlimit limit{file_limit, file_limit};
+      setrlimit(RLIMIT_FSIZE, &limit);
+    }
     std::vector<char*> argv{const_cast<char*>(MEMBRA_CLI)};
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -49,7 +57,7 @@ Stopped run_and_signal(const std::vector<std::string>& args, const std::function
   for (const auto start = Clock::now();
        !ready() && Clock::now() - start < std::chrono::seconds(60);)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  kill(pid, signal);
+  if (signal != 0) kill(pid, signal);
   const auto sent = Clock::now();
   Stopped s;
   int status = 0;
@@ -151,6 +159,21 @@ TEST_F(RunningCli, ASecondRunIntoTheSameFolderIsRefusedWhileTheFirstWrites) {
   EXPECT_NE(text.str().find("another membra (pid"), std::string::npos) << text.str();
   EXPECT_EQ(s.code, 130) << s.stderr_text;
   expect_untouched();  // neither wrote: the first was stopped, the second refused
+}
+
+TEST_F(RunningCli, AFullDiskEndsWithExit4NamingTheFileAndWritesNothing) {
+  // Files past 64 kB cannot be written, as on a full disk: the report, the meshes and the
+  // stencil of exp3's strips fit, the pictures do not.
+  const Stopped s = run_and_signal(
+      {"run", kExp3, "--out", (dir / "out").string(), "--quiet", "--set", "sheet.resolution=[9,9]"},
+      [] { return true; }, 0, dir / "log", 64 * 1024);
+  EXPECT_EQ(s.code, 4) << s.stderr_text;
+  // The message names the file (the first over the cap: a picture).
+  EXPECT_NE(
+      s.stderr_text.find((dir / "out").string() + "/curvature.png: write failed (disk full?)"),
+      std::string::npos)
+      << s.stderr_text;
+  expect_untouched();
 }
 
 }  // namespace

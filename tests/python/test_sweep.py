@@ -3,10 +3,10 @@ resume, the same results whatever the number of workers, failed scenes as rows."
 
 import json
 import os
+import shutil
 import signal
 import socket
 import subprocess
-import sys
 import time
 from pathlib import Path
 
@@ -44,10 +44,11 @@ class Cluster:
         self.port = free_port()
         self.address = f"tcp://127.0.0.1:{self.port}"
         env = {**os.environ, "OMP_NUM_THREADS": "1"}
-        dask = [sys.executable, "-m", "distributed.cli.dask_scheduler"]
+        # The `dask` command as a cluster's operator runs it (Debian's python3-dask).
+        self.dask = [shutil.which("dask") or "dask"]
         self.scheduler = subprocess.Popen(
-            dask + ["--host", "127.0.0.1", "--port", str(self.port), "--no-dashboard",
-                    "--dashboard-address", ":0"],
+            self.dask + ["scheduler", "--host", "127.0.0.1", "--port", str(self.port),
+                         "--no-dashboard", "--dashboard-address", ":0"],
             env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         self.workers = [self.start_worker(env) for _ in range(workers)]
         from distributed import Client
@@ -57,8 +58,7 @@ class Cluster:
 
     def start_worker(self, env):
         return subprocess.Popen(
-            [sys.executable, "-m", "distributed.cli.dask_worker", self.address, "--nthreads", "1",
-             "--no-dashboard"], env=env, stdout=subprocess.DEVNULL,
+            self.dask + ["worker", self.address, "--nthreads", "1", "--no-dashboard"], env=env, stdout=subprocess.DEVNULL,
             stderr=subprocess.DEVNULL, start_new_session=True)
 
     def close(self):

@@ -1,6 +1,9 @@
 #pragma once
 // Scene preparation: the membrane a scene describes, built and pinned, with the memory checked
 // before anything is allocated and the force scale of the convergence test.
+#include <chrono>
+#include <optional>
+
 #include "membra/model/membrane.hpp"
 #include "membra/process/scene.hpp"
 
@@ -11,6 +14,8 @@ struct PreparedScene {
   Membrane membrane;
   int pinned = 0;            // particles pinned by the scene's pins
   double force_scale = 0.0;  // k_stretch x grid spacing, N: the unit of the relative residual
+  // When the run's wall-time budget (simulation.max_seconds) ends; none: no budget.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 // Builds the membrane of a scene without running it (what `membra validate` checks). Throws

@@ -71,8 +71,9 @@ struct RunResult {
   // most often found first; empty otherwise. This result is release 0's (the scene's own
   // imperfection), one of them when it is stable.
   std::vector<Branch> branches;
-  int explored = 0;   // releases made (0: no exploration)
-  int unsettled = 0;  // of them, ended unconverged or at a saddle (in no branch)
+  bool out_of_time = false;  // stopped unconverged at simulation.max_seconds
+  int explored = 0;          // releases made (0: no exploration)
+  int unsettled = 0;         // of them, ended unconverged or at a saddle (in no branch)
 };
 
 // One stable form found by exploring, with the first release that ended in it.

@@ -35,6 +35,9 @@ struct SimulationSpec {
   // Releases of the scene, each with another seeded imperfection, to find every stable form it
   // can take (explore.hpp); 1: the scene's own release only.
   int explore = 1;
+  // Wall-time budget of a run (each release of an exploration), s; 0: none. A run that
+  // exhausts it stops unconverged and says so.
+  double max_seconds = 0.0;
 
   // True for the equilibrium solvers (static, newton), false for time stepping.
   bool is_static() const { return solver_info(solver).equilibrium; }
