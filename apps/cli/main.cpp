@@ -50,6 +50,7 @@ extern "C" void on_stop_signal(int signal) {
 void install_stop_handlers() {
   struct sigaction sa {};
   sa.sa_handler = on_stop_signal;
+  sa.sa_flags = SA_RESTART;  // a write to stderr under way is not cut short
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
@@ -286,7 +287,9 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kOk : kBadInput;
   }
-  install_stop_handlers();
+  // Only the commands whose runs poll the stop request; the others keep the default (Ctrl-C
+  // ends them at once).
+  if (*c.run || *c.design) install_stop_handlers();
   try {
     return dispatch(c, a);
   } catch (const membra::Interrupted& e) {

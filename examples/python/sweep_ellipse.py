@@ -1,7 +1,7 @@
 """The ellipse's axes over a 6 x 6 grid on a Dask cluster (docs/sweeps.md):
 
     PYTHONPATH=build/python python3 examples/python/sweep_ellipse.py [--scheduler tcp://HOST:8786]
-        [--resolution N] [--out DIR]
+        [--resolution N] [--image-size W H] [--out DIR]
 
 Prints the five deepest bowls and writes out/ellipse_axes/ (results.csv, contact_sheet.png,
 scenes/NNNN/ with each run's files).
@@ -19,11 +19,15 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--scheduler", help="tcp://HOST:8786 of a running Dask scheduler")
     parser.add_argument("--resolution", type=int, default=21, help="particles per side (default 21)")
+    parser.add_argument("--image-size", type=int, nargs=2, metavar=("W", "H"),
+                        help="pixels of each scene's pictures (default the scene's, 1200 x 900)")
     parser.add_argument("--out", default="out/ellipse_axes")
     args = parser.parse_args()
 
     spec = membra.sweep_spec.load_sweep(here / "ellipse_axes.sweep.json")
     spec["set"]["sheet.resolution"] = [args.resolution, args.resolution]
+    if args.image_size:
+        spec["set"]["output.image_size"] = args.image_size
     table = membra.sweep(spec, out=args.out, scheduler=args.scheduler)
 
     rx, ry = (f"protocol.1.pattern.union.0.ellipse.radii.{i}" for i in (0, 1))

@@ -32,7 +32,8 @@ def write_contact_sheet(table, jobs, file, title):
     for ax in axes.flat:
         ax.axis("off")
     for ax, (_, row) in zip(axes.flat, table.iterrows()):
-        picture = Path(row["out"] or "") / "curvature.png" if row.get("out") else None
+        out = row.get("out")  # NaN for a job whose workers died with it
+        picture = Path(out) / "curvature.png" if isinstance(out, str) and out else None
         if picture is not None and picture.is_file():
             ax.imshow(mpimg.imread(picture))
         else:

@@ -34,9 +34,9 @@ class Membrane:
         self._own_protocol = base.pop("protocol", [])
         self._base = base
         self.steps = []  # the steps applied so far, as protocol entries
-        bare = _membra.parse_scene(json.dumps(base), str(self.scene.base_dir))
-        self._run = _membra.NativeRun(bare, progress)
-        self._bare = bare
+        # Prepared from the whole scene (its protocol is not applied: the steps are yours), so
+        # that it is valid exactly when membra.run takes it.
+        self._run = _membra.NativeRun(self.scene._native, progress)
 
     def step(self, entry):
         """Applies one protocol entry, a dict such as {"step": "release", "increments": 10}."""

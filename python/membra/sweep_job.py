@@ -73,6 +73,11 @@ def run_job(job, out):
     """Runs one job into its folder under `out` and returns its row (a dict). A job that fails
     is a row with its error; it never raises, so that one bad scene loses no sweep."""
     folder = job_dir(out, job)
+    # An earlier run's row goes first: if this run fails, no stale success is resumed from it.
+    try:
+        (folder / ROW_FILE).unlink()
+    except FileNotFoundError:
+        pass
     start = time.perf_counter()
     row = {"id": job["id"], **job["params"]}
     try:

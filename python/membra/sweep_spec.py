@@ -17,6 +17,7 @@ crossed with the grid. Jobs are numbered in a fixed order, so that a sweep's res
 folders are the same whatever the cluster.
 """
 
+import hashlib
 import itertools
 import json
 from pathlib import Path
@@ -99,5 +100,14 @@ def expand(spec):
     jobs = []
     for i, (params, file, varied) in enumerate(variants):
         sets = [f"{k}={json.dumps(v)}" for k, v in {**fixed, **varied}.items()]
-        jobs.append({"id": f"{i:04d}", "kind": kind, "file": file, "params": params, "sets": sets})
+        jobs.append({"id": f"{i:04d}", "kind": kind, "file": file, "params": params, "sets": sets,
+                     "file_sha256": _digest(file)})
     return jobs
+
+
+def _digest(file):
+    """The file's content hash, so that a resumed sweep reruns the jobs of an edited scene."""
+    try:
+        return hashlib.sha256(Path(file).read_bytes()).hexdigest()
+    except OSError:
+        return None  # the job fails, as a row, when it runs

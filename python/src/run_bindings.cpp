@@ -1,5 +1,6 @@
 // Runs: the one-shot run of a scene and the step-by-step run, and what they return.
 #include <memory>
+#include <mutex>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -84,29 +85,54 @@ class NativeRun {
   bool apply_last(const ScenePtr& with_step) {
     if (with_step->protocol.empty()) throw std::invalid_argument("the scene has no step");
     kept_.push_back(with_step);
-    py::gil_scoped_release nogil;
-    return run_->apply(with_step->protocol.back());
+    return guarded([&] { return run_->apply(with_step->protocol.back()); });
   }
   bool solve() {
-    py::gil_scoped_release nogil;
-    return run_->solve();
+    return guarded([&] { return run_->solve(); });
   }
-  std::shared_ptr<NativeResult> result() const {
+  std::shared_ptr<NativeResult> result() {
     auto r = std::make_shared<NativeResult>();
-    r->scene = scene_;
+    // The scene with the steps applied so far: its pattern is the one the outputs draw.
+    r->scene = kept_.empty() ? scene_ : kept_.back();
     py::gil_scoped_release nogil;
+    const std::lock_guard lock(mutex_);
     r->run = run_->result();
     return r;
   }
-  py::array_t<double> positions() const {
-    return positions_mm(run_->partial().prepared.membrane.state.x);
+  py::array_t<double> positions() {
+    Points x;
+    {
+      py::gil_scoped_release nogil;  // a step may be running in another thread: wait for it
+      const std::lock_guard lock(mutex_);
+      x = run_->partial().prepared.membrane.state.x;
+    }
+    return positions_mm(x);
   }
 
  private:
+  // Runs a step or solve without the GIL and one at a time. A step cut short (Ctrl-C, an error
+  // in the progress callback) leaves the membrane half-changed: the run refuses further steps.
+  template <class F>
+  bool guarded(F&& f) {
+    if (broken_)
+      throw std::runtime_error(
+          "a step of this membrane was interrupted half-way; start a new Membrane");
+    py::gil_scoped_release nogil;
+    const std::lock_guard lock(mutex_);
+    try {
+      return f();
+    } catch (...) {
+      broken_ = true;
+      throw;
+    }
+  }
+
   ScenePtr scene_;
   py::object progress_;
   std::vector<ScenePtr> kept_;
   std::unique_ptr<SceneRun> run_;
+  std::mutex mutex_;
+  bool broken_ = false;
 };
 
 }  // namespace

@@ -79,15 +79,17 @@ OutputSet::OutputSet(fs::path dir) : dir_(std::move(dir)) {
 
 OutputSet::~OutputSet() {
   std::error_code ec;
+  if (!committed_) {
+    for (const auto& [tmp, final_path] : staged_) fs::remove(tmp, ec);
+    // The folders made for staged files (frames/), deepest first, if nothing else is in them.
+    for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it)
+      if (fs::is_empty(*it, ec)) fs::remove(*it, ec);
+  }
+  // The lock last, so that the next writer finds the folder cleaned up.
   if (lock_fd_ >= 0) {
     fs::remove(dir_ / kLockName, ec);  // unlinked while still held: see take_lock
     ::close(lock_fd_);
   }
-  if (committed_) return;
-  for (const auto& [tmp, final_path] : staged_) fs::remove(tmp, ec);
-  // The folders made for staged files (frames/), deepest first, if nothing else is in them.
-  for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it)
-    if (fs::is_empty(*it, ec)) fs::remove(*it, ec);
 }
 
 void OutputSet::add(const std::string& name, const std::function<void(std::ostream&)>& write) {

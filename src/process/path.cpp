@@ -1,6 +1,7 @@
 #include "membra/process/path.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "membra/core/stop_request.hpp"
@@ -51,7 +52,10 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
       next += every * ((step - next) / every + 1);
     };
   }
-  return solve_with(sim.solver, m, s, o);
+  SolveReport r = solve_with(sim.solver, m, s, o);
+  r.out_of_time =
+      p.deadline && !r.converged && !r.diverged && std::chrono::steady_clock::now() >= *p.deadline;
+  return r;
 }
 
 namespace {
@@ -72,6 +76,7 @@ void add_work(SolveReport& total, const SolveReport& r) {
 void accumulate(SolveReport& total, const SolveReport& r) {
   add_work(total, r);
   total.saddle = r.saddle;
+  total.out_of_time = total.out_of_time || r.out_of_time;
   total.residual = r.residual;
   total.residual_relative = r.residual_relative;
   total.converged = r.converged;

@@ -12,10 +12,10 @@
 namespace membra {
 namespace {
 
-// A run whose budget ran out says so, first, in its message.
+// A run whose budget ran out (a solve stopped for it, and the run ended unconverged) says so,
+// first, in its message.
 void note_budget(const Scene& scene, RunResult& r) {
-  const auto& deadline = r.prepared.deadline;
-  r.out_of_time = deadline && std::chrono::steady_clock::now() >= *deadline && !r.solve.converged;
+  r.out_of_time = r.solve.out_of_time && !r.solve.converged;
   if (r.out_of_time)
     r.solve.message = "stopped at the wall-time budget (simulation.max_seconds = " +
                       std::to_string(scene.simulation.max_seconds) + " s): " + r.solve.message;
@@ -26,10 +26,6 @@ void note_budget(const Scene& scene, RunResult& r) {
 SceneRun::SceneRun(const Scene& scene, ProgressFn progress)
     : scene_(scene), progress_(std::move(progress)) {
   r_.prepared = prepare_scene(scene);
-  if (scene.simulation.max_seconds > 0.0)
-    r_.prepared.deadline = std::chrono::steady_clock::now() +
-                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                               std::chrono::duration<double>(scene.simulation.max_seconds));
   recorder_ = FrameRecorder{scene.output.frames, &r_.frames};
 }
 
@@ -39,8 +35,18 @@ bool SceneRun::record(StepReport step) {
   return !r_.solve.diverged;
 }
 
+// The wall-time budget counts from the first step or solve (a notebook's pauses before it do
+// not count; those between steps do).
+void SceneRun::start_budget() {
+  if (scene_.simulation.max_seconds > 0.0 && !r_.prepared.deadline)
+    r_.prepared.deadline = std::chrono::steady_clock::now() +
+                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                               std::chrono::duration<double>(scene_.simulation.max_seconds));
+}
+
 bool SceneRun::apply(const ProtocolStep& step) {
   if (diverged()) throw std::logic_error("the run diverged: no further step can be applied");
+  start_budget();
   StepEffects effects;
   const Path path = apply_step(r_.prepared, step, effects);
   for (StressFeature& f : effects.features) r_.features.push_back(std::move(f));
@@ -55,6 +61,7 @@ bool SceneRun::apply(const ProtocolStep& step) {
 
 bool SceneRun::solve() {
   if (diverged()) throw std::logic_error("the run diverged: it cannot be solved further");
+  start_budget();
   State& s = r_.prepared.membrane.state;
   return record(
       {"solve", solve_scene_step(scene_, r_.prepared, s, "solve", progress_, &recorder_), 0});

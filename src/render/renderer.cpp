@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "membra/core/stop_request.hpp"
 #include "membra/geometry/orbit_camera.hpp"
 
 namespace membra {
@@ -86,6 +87,8 @@ Renderer::~Renderer() {
 
 Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
                        const std::vector<Rgb>& colors, const Camera& cam, const Legend* legend) {
+  // A stop asked for (Ctrl-C) while a run's pictures are drawn: before another large render.
+  if (const int sig = stop_requested()) throw Interrupted(sig, "while writing the outputs");
   Impl& r = *impl_;
   eglMakeCurrent(r.display, EGL_NO_SURFACE, EGL_NO_SURFACE, r.context);
   glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);

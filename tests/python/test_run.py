@@ -71,6 +71,30 @@ def test_membrane_step_by_step_is_membra_run(small_ellipse):
     assert without_timings(m.result().report) == without_timings(whole.report)
 
 
+def test_a_membrane_writes_the_files_of_its_steps(small_ellipse, tmp_path):
+    m = membra.Membrane(small_ellipse)
+    m.run_protocol()
+    m.result().write(tmp_path)
+    written = {p.name for p in tmp_path.iterdir()}
+    assert {"final.obj", "report.json", "pattern.svg", "pattern.png", "curvature.png"} <= written
+
+
+def test_a_membrane_interrupted_half_way_refuses_further_steps(small_ellipse):
+    import _thread
+
+    m = membra.Membrane(small_ellipse.with_set({"sheet.resolution": [31, 31],
+                                                "simulation.solver": "static"}))
+    m.stretch(lambda_=[1.5, 1.0])
+    m.step(small_ellipse.data["protocol"][1])
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        m.release(increments=10)
+    timer.cancel()
+    with pytest.raises(RuntimeError, match="interrupted half-way"):
+        m.solve()
+
+
 def test_the_solve_releases_the_gil(small_ellipse):
     scene = small_ellipse.with_set({"sheet.resolution": [21, 21]})
     ticks = []

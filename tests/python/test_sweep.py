@@ -25,7 +25,8 @@ def eight_scenes(root):
     return {
         "name": "eight",
         "scene": str(root / "examples" / "synclastic_ellipse.json"),
-        "set": {"sheet.resolution": [11, 11], "simulation.solver": "newton"},
+        "set": {"sheet.resolution": [11, 11], "simulation.solver": "newton",
+                "output.image_size": [320, 240]},
         "grid": {"protocol.1.pattern.union.0.ellipse.radii.1": [50, 60, 70, 80],
                  "protocol.1.pattern.union.0.ellipse.radii.0": [100, 120]},
     }
@@ -51,18 +52,25 @@ class Cluster:
                          "--no-dashboard", "--dashboard-address", ":0"],
             env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         self.workers = [self.start_worker(env) for _ in range(workers)]
-        from distributed import Client
+        self.client = None
+        try:
+            from distributed import Client
 
-        self.client = Client(self.address, timeout=30)
-        self.client.wait_for_workers(workers, timeout=60)
+            self.client = Client(self.address, timeout=30)
+            self.client.wait_for_workers(workers, timeout=60)
+        except Exception:
+            self.close()  # no process left behind
+            raise
 
     def start_worker(self, env):
         return subprocess.Popen(
-            self.dask + ["worker", self.address, "--nthreads", "1", "--no-dashboard"], env=env, stdout=subprocess.DEVNULL,
+            self.dask + ["worker", self.address, "--nthreads", "1", "--no-dashboard",
+                         "--death-timeout", "120"], env=env, stdout=subprocess.DEVNULL,
             stderr=subprocess.DEVNULL, start_new_session=True)
 
     def close(self):
-        self.client.close()
+        if self.client is not None:
+            self.client.close()
         for worker in self.workers:  # each worker is a nanny and its process: a group
             if worker.poll() is None:
                 os.killpg(worker.pid, signal.SIGKILL)
@@ -164,12 +172,12 @@ def test_the_cli_runs_a_sweep_file(root, cli, tmp_path):
     file = tmp_path / "two.sweep.json"
     file.write_text(json.dumps(spec))
     run = subprocess.run([cli, "sweep", str(file), "--out", str(tmp_path / "o"), "--workers", "1"],
-                         capture_output=True, text=True)
+                         capture_output=True, text=True, timeout=300)
     assert run.returncode == 0, run.stderr
     table = pd.read_csv(tmp_path / "o" / "results.csv")
     assert len(table) == 2 and table["converged"].all()
     bad = subprocess.run([cli, "sweep", str(tmp_path / "missing.json")], capture_output=True,
-                         text=True)
+                         text=True, timeout=120)
     assert bad.returncode == 2 and "missing.json" in bad.stderr
 
 

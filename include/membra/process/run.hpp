@@ -34,6 +34,7 @@ class SceneRun {
 
  private:
   bool record(StepReport step);
+  void start_budget();
   const Scene& scene_;
   ProgressFn progress_;
   RunResult r_;

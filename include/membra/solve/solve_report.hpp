@@ -20,7 +20,8 @@ struct SolveReport {
   long negative_curvature_steps = 0;  // newton: steps taken along negative curvature (saddles)
   long increments = 0;                // path increments solved (a retried one counts once)
   long increments_halved = 0;         // newton: increments that failed and were taken in halves
-  bool saddle = false;  // newton: stopped at a point where the energy is not a minimum
+  bool saddle = false;       // newton: stopped at a point where the energy is not a minimum
+  bool out_of_time = false;  // stopped unconverged because the run's wall-time budget ran out
   double wall_seconds = 0.0;
 };
 
