@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <iostream>
 
-#include "membra/core/stop_request.hpp"
 #include "membra/io/design_files.hpp"
 #include "membra/io/design_reader.hpp"
 #include "membra/io/output_set.hpp"
@@ -30,8 +29,6 @@ int cmd_design(const DesignArgs& args) {
   });
   stage_design_files(r, out);
   const std::string note = stage_design_pictures(r, out);
-  if (const int sig = stop_requested())  // the staged files go with the OutputSet
-    throw Interrupted(sig, "while writing the outputs");
   out.commit();
   if (!note.empty()) std::cerr << "membra: warning: no PNG renders: " << note << "\n";
   if (!args.quiet)

@@ -115,8 +115,6 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
               << r.curvature_map->message << "\n";
   const std::string& render_note = staged.render_note;
   if (!render_note.empty()) std::cerr << "membra: warning: no PNG renders: " << render_note << "\n";
-  if (const int sig = membra::stop_requested())  // the staged files go with the OutputSet
-    throw membra::Interrupted(sig, "while writing the outputs");
   out.commit();
   if (!quiet) {
     std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"

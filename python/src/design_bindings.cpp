@@ -13,6 +13,7 @@
 #include "membra/io/design_files.hpp"
 #include "membra/io/design_reader.hpp"
 #include "membra/render/design_pictures.hpp"
+#include "progress_bridge.hpp"
 
 namespace membra::python {
 
@@ -35,14 +36,10 @@ py::dict iteration_dict(const DesignIteration& it) {
 }
 
 std::shared_ptr<DesignResult> design(const DesignPtr& spec, const py::object& progress) {
-  PyObject* cb = progress.ptr();  // borrowed: the caller holds it during the design
+  const auto on_iteration = python_callback<DesignIteration>(progress, iteration_dict);
   auto r = std::make_shared<DesignResult>();
   py::gil_scoped_release nogil;
-  *r = run_design(*spec, [cb](const DesignIteration& it) {
-    py::gil_scoped_acquire gil;
-    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    if (cb != Py_None) py::reinterpret_borrow<py::object>(cb)(iteration_dict(it));
-  });
+  *r = run_design(*spec, on_iteration);
   return r;
 }
 

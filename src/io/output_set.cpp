@@ -112,6 +112,8 @@ void OutputSet::add(const std::string& name, const std::function<void(std::ostre
 }
 
 void OutputSet::commit() {
+  // A stop asked for after the last file was staged: still nothing moves into place.
+  if (const int sig = stop_requested()) throw Interrupted(sig, "while writing the outputs");
   for (const auto& [tmp, final_path] : staged_) {
     std::error_code ec;
     fs::rename(tmp, final_path, ec);

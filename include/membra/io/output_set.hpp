@@ -32,7 +32,8 @@ class OutputSet {
   // writing fails (disk full, I/O error), Interrupted if a stop was requested
   // (core/stop_request.hpp).
   void add(const std::string& name, const std::function<void(std::ostream&)>& write);
-  // Renames every staged file to its final name.
+  // Renames every staged file to its final name; throws Interrupted instead, moving nothing,
+  // if a stop was requested.
   void commit();
   const std::filesystem::path& dir() const { return dir_; }
 
