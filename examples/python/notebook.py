@@ -29,10 +29,9 @@ bowl = membra.run(scene, out=out / "bowl")
 print(bowl, "global form:", bowl.report["curvature"]["global"]["classification"])
 
 # %% 2. Its curvature, plotted on the released form (mm and 1/mm^2, as in the outputs).
-def plot(ax, result, title):
+def plot(ax, result, title, lim):
     x, y, z = result.positions.T
     k = result.gaussian_curvature
-    lim = np.percentile(np.abs(k), 95) or 1e-9
     surf = ax.plot_trisurf(x, y, z, triangles=result.triangles, cmap="RdYlGn_r",
                            vmin=-lim, vmax=lim, linewidth=0)
     surf.set_array(k[result.triangles].mean(axis=1))
@@ -42,17 +41,19 @@ def plot(ax, result, title):
 
 
 # %% 3. Change the pattern: the filled ellipse's vertical radius from 80 to 50 mm.
-flatter = membra.run(scene.with_set({"protocol.1.pattern.union.0.ellipse.radii.1": 50}),
-                     out=out / "flatter")
-print(flatter)
+narrow = membra.run(scene.with_set({"protocol.1.pattern.union.0.ellipse.radii.1": 50}),
+                     out=out / "narrow")
+print(narrow)
 
 fig = plt.figure(figsize=(10, 4.5))
-for i, (result, title) in enumerate([(bowl, "ellipse 120 x 80 mm"), (flatter, "ellipse 120 x 50 mm")]):
+# One colour range for both, so that the colour bar reads for each: 95 % of |K| in range.
+lim = max(np.percentile(np.abs(r.gaussian_curvature), 95) for r in (bowl, narrow)) or 1e-9
+for i, (result, title) in enumerate([(bowl, "ellipse 120 x 80 mm"), (narrow, "ellipse 120 x 50 mm")]):
     ax = fig.add_subplot(1, 2, i + 1, projection="3d")
-    surf = plot(ax, result, f"{title}: height {result.report['shape']['height']:.1f} mm")
+    surf = plot(ax, result, f"{title}: height {result.report['shape']['height']:.1f} mm", lim)
 fig.colorbar(surf, ax=fig.axes, shrink=0.6, label="Gaussian curvature, 1/mm²")
 fig.savefig(out / "compare.png", dpi=100)
-print(f"heights: {bowl.report['shape']['height']:.1f} mm and {flatter.report['shape']['height']:.1f} mm;"
+print(f"heights: {bowl.report['shape']['height']:.1f} mm and {narrow.report['shape']['height']:.1f} mm;"
       f" figure in {out / 'compare.png'}")
 
 # %% 4. The process step by step, as in the lab: stretch, impregnate, release.
