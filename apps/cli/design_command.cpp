@@ -6,7 +6,7 @@
 #include "membra/io/design_files.hpp"
 #include "membra/io/design_reader.hpp"
 #include "membra/io/output_set.hpp"
-#include "membra/render/design_pictures.hpp"
+#include "membra/render/design_outputs.hpp"
 
 namespace membra::cli {
 
@@ -27,8 +27,7 @@ int cmd_design(const DesignArgs& args) {
                   it.note.c_str());
     std::cerr << line;
   });
-  stage_design_files(r, out);
-  const std::string note = stage_design_pictures(r, out);
+  const std::string note = stage_design_outputs(r, out);
   out.commit();
   if (!note.empty()) std::cerr << "membra: warning: no PNG renders: " << note << "\n";
   if (!args.quiet)
@@ -37,7 +36,7 @@ int cmd_design(const DesignArgs& args) {
               << r.seconds << " s); a flat sheet scores " << r.flat_error << " %\nresults in "
               << out.dir().string()
               << "/ (scene.json, pattern.svg, pattern.dxf, final.obj, final.ply, "
-                 "comparison.png, report.json)\n";
+                 "comparison.png, report.json, report.html)\n";
   if (!r.reachable) {
     std::cerr << "membra: " << args.file << ": the target cannot be reached: " << r.message
               << "\nmembra: the best attempt is in " << out.dir().string() << "/\n";

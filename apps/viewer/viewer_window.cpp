@@ -207,6 +207,7 @@ void ViewerWindow::Impl::draw_scene(const ViewerSession& s, ViewSettings& v) {
   if (v.range) std::tie(legend.lo, legend.hi) = *v.range;
   glViewport(scene_x(), 0, legend_w, h);
   painter->legend(legend, legend_w, h);
+  painter->heading(legend.title, legend_w, h);
   glViewport(0, 0, w, h);
 }
 

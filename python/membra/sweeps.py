@@ -76,7 +76,8 @@ def sweep(spec, out, scheduler=None, workers=None, client=None, resume=True, con
     design_error (% of the target's diameter), wall_seconds, out, error, ...).
 
     spec: a sweep file path or dict (membra.sweep_spec).
-    out: the folder of the results: scenes/NNNN/ per job, results.csv, contact_sheet.png.
+    out: the folder of the results: scenes/NNNN/ per job, results.csv, report.html (a sortable
+        table with a thumbnail per scene), contact_sheet.png.
     scheduler: "tcp://HOST:8786" of a running Dask scheduler; default a LocalCluster of
         `workers` processes (default 2). client: an existing distributed.Client instead.
     resume: take the rows of jobs finished by an earlier run (their scenes/NNNN/row.json)
@@ -114,6 +115,9 @@ def sweep(spec, out, scheduler=None, workers=None, client=None, resume=True, con
                     cluster.close()
     table = _table(jobs, done, pd)
     table.to_csv(out / "results.csv", index=False)
+    from .sweep_page import write_sweep_page
+
+    write_sweep_page(table, _params(jobs), out, spec["name"])
     if contact_sheet:
         from .contact_sheet import write_contact_sheet
 
@@ -125,12 +129,17 @@ def sweep(spec, out, scheduler=None, workers=None, client=None, resume=True, con
     return table
 
 
-def _table(jobs, rows, pd):
+def _params(jobs):
     params = []
     for job in jobs:
         for k in job["params"]:
             if k not in params:
                 params.append(k)
+    return params
+
+
+def _table(jobs, rows, pd):
+    params = _params(jobs)
     records = [rows[j["id"]] for j in jobs]
     table = pd.DataFrame.from_records(records)
     for c in COLUMNS:

@@ -12,7 +12,7 @@
 #include "membra/design/inverse_design.hpp"
 #include "membra/io/design_files.hpp"
 #include "membra/io/design_reader.hpp"
-#include "membra/render/design_pictures.hpp"
+#include "membra/render/design_outputs.hpp"
 #include "progress_bridge.hpp"
 
 namespace membra::python {
@@ -46,8 +46,7 @@ std::shared_ptr<DesignResult> design(const DesignPtr& spec, const py::object& pr
 std::string write_design(const DesignResult& r, const std::filesystem::path& dir) {
   py::gil_scoped_release nogil;
   OutputSet out(dir);
-  stage_design_files(r, out);
-  const std::string note = stage_design_pictures(r, out);
+  const std::string note = stage_design_outputs(r, out);
   out.commit();
   return note;
 }

@@ -92,6 +92,19 @@ OutputSet::~OutputSet() {
   }
 }
 
+fs::path OutputSet::staged(const std::string& name) const {
+  for (const auto& [tmp, final_path] : staged_)
+    if (final_path == dir_ / name) return tmp;
+  return {};
+}
+
+std::vector<std::string> OutputSet::names() const {
+  std::vector<std::string> out;
+  for (const auto& [tmp, final_path] : staged_)
+    out.push_back(final_path.lexically_relative(dir_).generic_string());
+  return out;
+}
+
 void OutputSet::add(const std::string& name, const std::function<void(std::ostream&)>& write) {
   // A stop asked for (Ctrl-C) while the outputs are being written: drop them all, here.
   if (const int sig = stop_requested()) throw Interrupted(sig, "while writing the outputs");

@@ -1,5 +1,6 @@
 #include "membra/io/run_files.hpp"
 
+#include "membra/io/gltf.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/ply.hpp"
 #include "membra/io/stencil.hpp"
@@ -21,6 +22,10 @@ RunColors run_colors(const RunResult& r, const PictureOptions& opts) {
   return c;
 }
 
+std::vector<ColourScale> run_scales(const RunColors& c) {
+  return {{"Gaussian curvature", "1/mm^2", c.k_lo, c.k_hi}, {"Stress", "MPa", c.s_lo, c.s_hi}};
+}
+
 void stage_run_files(const Scene& scene, const RunResult& r, const PictureOptions& opts,
                      OutputSet& out) {
   const auto& mesh = r.prepared.membrane.sheet;
@@ -31,6 +36,19 @@ void stage_run_files(const Scene& scene, const RunResult& r, const PictureOption
   out.add("final.ply", [&](std::ostream& os) {
     write_ply(os, x, mesh.triangles, k_colors,
               {{"gaussian_curvature", c.curvature}, {"stress", c.stress}});
+  });
+  out.add("final.glb", [&](std::ostream& os) {
+    GlbSheet g{x,
+               mesh.triangles,
+               k_colors,
+               colorize(c.stress, c.s_lo, c.s_hi),
+               c.curvature,
+               c.stress,
+               nlohmann::json::object()};
+    g.extras["name"] = scene.name;
+    g.extras["curvature_range"] = {c.k_lo, c.k_hi};  // 1/mm^2, the colours' ends
+    g.extras["stress_range"] = {c.s_lo, c.s_hi};     // MPa
+    write_glb(os, g);
   });
   // Each stable form an exploration found (simulation.explore), as a mesh.
   for (size_t b = 0; b < r.branches.size(); ++b) {

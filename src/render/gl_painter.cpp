@@ -2,11 +2,14 @@
 
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/glcorearb.h>
-#include <stb_easy_font.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 
+#include "membra/core/readable_units.hpp"
+#include "membra/render/font.hpp"
 #include "membra/render/renderer.hpp"
 
 namespace membra {
@@ -35,9 +38,47 @@ void main() {
 
 const char* kFragmentShader = R"(#version 330 core
 in vec3 shade;
+uniform float alpha;
 out vec4 out_color;
-void main() { out_color = vec4(shade, 1.0); }
+void main() { out_color = vec4(shade, alpha); }
 )";
+
+// Text: a coverage texture (stb_truetype's) tinted with the ink colour.
+const char* kTextVertexShader = R"(#version 330 core
+layout(location = 0) in vec2 position;
+layout(location = 1) in vec2 uv;
+uniform mat4 pixels;
+out vec2 tex;
+void main() {
+  gl_Position = pixels * vec4(position, 0.0, 1.0);
+  tex = uv;
+}
+)";
+
+const char* kTextFragmentShader = R"(#version 330 core
+in vec2 tex;
+uniform sampler2D coverage;
+uniform vec3 ink;
+out vec4 out_color;
+void main() { out_color = vec4(ink, texture(coverage, tex).r); }
+)";
+
+GLuint compile(GLenum type, const char* src);
+
+GLuint link(const char* vertex, const char* fragment) {
+  const GLuint program = glCreateProgram();
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertex);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment);
+  glAttachShader(program, vs);
+  glAttachShader(program, fs);
+  glLinkProgram(program);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) throw RenderError("shader program failed to link");
+  return program;
+}
 
 GLuint compile(GLenum type, const char* src) {
   const GLuint s = glCreateShader(type);
@@ -76,6 +117,8 @@ Eigen::Matrix4f pixel_matrix(int width, int height) {
 
 struct GlPainter::Impl {
   GLuint program = 0, vao = 0, vbo = 0;
+  GLuint text_program = 0, text_vao = 0, text_vbo = 0, texture = 0;
+  float alpha = 1.0f;
 
   void draw(const std::vector<Vertex>& v, GLenum mode, const float* vp, const float* rot, int lit) {
     if (v.empty()) return;
@@ -92,6 +135,7 @@ struct GlPainter::Impl {
     glUniformMatrix4fv(glGetUniformLocation(program, "view_projection"), 1, GL_FALSE, vp);
     glUniformMatrix3fv(glGetUniformLocation(program, "view_rotation"), 1, GL_FALSE, rot);
     glUniform1i(glGetUniformLocation(program, "lit"), lit);
+    glUniform1f(glGetUniformLocation(program, "alpha"), alpha);
     glDrawArrays(mode, 0, static_cast<GLsizei>(v.size()));
   }
   void draw_flat(const std::vector<Vertex>& v, GLenum mode, const Eigen::Matrix4f& vp) {
@@ -102,19 +146,13 @@ struct GlPainter::Impl {
 
 GlPainter::GlPainter() : impl_(std::make_unique<Impl>()) {
   Impl& r = *impl_;
-  r.program = glCreateProgram();
-  const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-  glAttachShader(r.program, vs);
-  glAttachShader(r.program, fs);
-  glLinkProgram(r.program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(r.program, GL_LINK_STATUS, &ok);
-  if (!ok) throw RenderError("shader program failed to link");
+  r.program = link(kVertexShader, kFragmentShader);
+  r.text_program = link(kTextVertexShader, kTextFragmentShader);
   glGenVertexArrays(1, &r.vao);
   glGenBuffers(1, &r.vbo);
+  glGenVertexArrays(1, &r.text_vao);
+  glGenBuffers(1, &r.text_vbo);
+  glGenTextures(1, &r.texture);
 }
 
 GlPainter::~GlPainter() {
@@ -123,6 +161,10 @@ GlPainter::~GlPainter() {
   glDeleteBuffers(1, &impl_->vbo);
   glDeleteVertexArrays(1, &impl_->vao);
   glDeleteProgram(impl_->program);
+  glDeleteBuffers(1, &impl_->text_vbo);
+  glDeleteVertexArrays(1, &impl_->text_vao);
+  glDeleteTextures(1, &impl_->texture);
+  glDeleteProgram(impl_->text_program);
 }
 
 void GlPainter::mesh(const Points& x, const std::vector<Triangle>& tris,
@@ -172,30 +214,104 @@ void GlPainter::pixel_triangles(const std::vector<Vec3>& corners, const std::vec
   impl_->draw_flat(v, GL_TRIANGLES, pixel_matrix(width, height));
 }
 
-void GlPainter::text(const std::string& str, float x, float y, float scale, const Rgb& color,
-                     int width, int height) {
-  // stb_easy_font writes quads (x, y, z, packed colour) at 1 pixel per unit.
-  std::vector<char> buffer(str.size() * 270 + 64);
-  const int quads = stb_easy_font_print(0, 0, const_cast<char*>(str.c_str()), nullptr,
-                                        buffer.data(), static_cast<int>(buffer.size()));
-  const float* q = reinterpret_cast<const float*>(buffer.data());
-  std::vector<Vertex> v;
-  v.reserve(static_cast<size_t>(quads) * 6);
-  for (int i = 0; i < quads; ++i) {
-    Vertex c[4];
-    for (int k = 0; k < 4; ++k) {
-      const float* e = q + (i * 4 + k) * 4;
-      c[k] = flat_vertex(Vec3(x + scale * e[0], y + scale * e[1], 0.0), color);
-    }
-    v.insert(v.end(), {c[0], c[1], c[2], c[0], c[2], c[3]});
+void GlPainter::shadow(const Points& x, const std::vector<Triangle>& tris, double ground_z,
+                       double blur, const Eigen::Matrix4f& vp) {
+  // The form flattened onto the ground, drawn 40 times at offsets spread over a disk of
+  // radius `blur` with a little grey each: a soft penumbra. The stencil lets each copy darken a
+  // pixel once however often the flattened sheet overlaps itself there.
+  std::vector<Vertex> verts;
+  verts.reserve(tris.size() * 3);
+  for (const Triangle& t : tris)
+    for (int k = 0; k < 3; ++k)
+      verts.push_back(flat_vertex(Vec3(x(0, t[k]), x(1, t[k]), ground_z), Rgb(0.25f, 0.27f, 0.3f)));
+  constexpr int copies = 40;
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_STENCIL_TEST);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  impl_->alpha = 0.012f;
+  for (int c = 0; c < copies; ++c) {
+    // A Vogel spiral: even cover of the disk, the same for every picture.
+    const double r = blur * std::sqrt((c + 0.5) / copies), a = 2.39996323 * c;
+    Eigen::Matrix4f shifted = Eigen::Matrix4f::Identity();
+    shifted(0, 3) = static_cast<float>(r * std::cos(a));
+    shifted(1, 3) = static_cast<float>(r * std::sin(a));
+    glClear(GL_STENCIL_BUFFER_BIT);
+    impl_->draw_flat(verts, GL_TRIANGLES, vp * shifted);
   }
-  impl_->draw_flat(v, GL_TRIANGLES, pixel_matrix(width, height));
+  impl_->alpha = 1.0f;
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_BLEND);
+}
+
+void GlPainter::text(const std::string& str, float x, float y, float pixel_height, const Rgb& color,
+                     int width, int height) {
+  if (str.empty()) return;
+  const TextBitmap t = Font::standard().rasterize(str, pixel_height);
+  Impl& r = *impl_;
+  glBindTexture(GL_TEXTURE_2D, r.texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, t.width, t.height, 0, GL_RED, GL_UNSIGNED_BYTE,
+               t.coverage.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  // Whole pixels, so that the glyphs' coverage lands on the pixels it was computed for.
+  const float x0 = std::round(x) - 1.0f, y0 = std::round(y) - 1.0f;
+  const float x1 = x0 + static_cast<float>(t.width), y1 = y0 + static_cast<float>(t.height);
+  const float quad[] = {x0, y0, 0, 0, x1, y0, 1, 0, x1, y1, 1, 1,
+                        x0, y0, 0, 0, x1, y1, 1, 1, x0, y1, 0, 1};
+  glUseProgram(r.text_program);
+  glBindVertexArray(r.text_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, r.text_vbo);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 4 * sizeof(float),
+                        reinterpret_cast<void*>(2 * sizeof(float)));
+  glUniformMatrix4fv(glGetUniformLocation(r.text_program, "pixels"), 1, GL_FALSE,
+                     pixel_matrix(width, height).data());
+  glUniform3f(glGetUniformLocation(r.text_program, "ink"), color.x(), color.y(), color.z());
+  glUniform1i(glGetUniformLocation(r.text_program, "coverage"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+  glDisable(GL_BLEND);
+}
+
+float GlPainter::text_size(int height) {
+  return std::clamp(static_cast<float>(height) / 34.0f, 9.0f, 64.0f);
+}
+
+float GlPainter::heading_band(int height) {
+  return 2.4f * text_size(height);
+}
+
+void GlPainter::heading(const std::string& title, int width, int height) {
+  const float margin = 0.5f * text_size(height);
+  const float room = static_cast<float>(width) - 2.0f * margin;
+  float px = 1.3f * text_size(height);
+  const float w = Font::standard().width(title, px);
+  if (w > room) px *= room / w;  // shrunk to fit the width rather than cut off
+  text(title, margin, margin, px, Rgb(0.1f, 0.1f, 0.1f), width, height);
 }
 
 void GlPainter::legend(const Legend& legend, int width, int height) {
   const float w = static_cast<float>(width), h = static_cast<float>(height);
-  const float x0 = 0.84f * w, x1 = x0 + 0.03f * w;
-  const float top = 0.15f * h, bottom = 0.85f * h;
+  const Ticks ticks = readable_ticks(legend.lo, legend.hi, legend.unit, 5);
+  const float margin = 0.5f * text_size(height);
+  const float x0 = 0.82f * w, x1 = x0 + std::max(6.0f, 0.022f * w);
+  // Labels as large as the pictures' text, smaller when the widest would not fit right of the bar.
+  float px = text_size(height);
+  float widest = Font::standard().width(ticks.unit, px) - (x1 - x0) - 0.4f * px;
+  for (const auto& l : ticks.labels) widest = std::max(widest, Font::standard().width(l, px));
+  const float room = w - margin - (x1 + 0.4f * px);
+  if (widest > room) px *= room / widest;
+  const float top = heading_band(height) + 2.2f * px, bottom = h - 1.5f * px - margin;
   std::vector<Vec3> corners;
   std::vector<Rgb> colors;
   constexpr int steps = 64;
@@ -210,15 +326,12 @@ void GlPainter::legend(const Legend& legend, int width, int height) {
   }
   pixel_triangles(corners, colors, width, height);
   const Rgb ink(0.1f, 0.1f, 0.1f);
-  char buf[64];
   for (int i = 0; i <= 4; ++i) {
-    const double v = legend.lo + (legend.hi - legend.lo) * i / 4.0;
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    text(buf, x1 + 6.0f, bottom - (bottom - top) * static_cast<float>(i) / 4.0f - 7.0f, 2.0f, ink,
-         width, height);
+    const float y = bottom - (bottom - top) * static_cast<float>(i) / 4.0f;
+    text(ticks.labels[static_cast<size_t>(i)], x1 + 0.4f * px, y - 0.6f * px, px, ink, width,
+         height);
   }
-  text(legend.title, 0.62f * w, 0.04f * h, 2.0f, ink, width, height);
-  text(legend.unit, x0 - 6.0f, top - 26.0f, 2.0f, ink, width, height);
+  text(ticks.unit, x0, top - 1.8f * px, px, ink, width, height);
 }
 
 }  // namespace membra

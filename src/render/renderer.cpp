@@ -13,6 +13,7 @@
 
 #include "membra/core/stop_request.hpp"
 #include "membra/geometry/orbit_camera.hpp"
+#include "membra/render/font.hpp"
 
 namespace membra {
 
@@ -23,6 +24,7 @@ Rgb Image::pixel(int px, int py) const {
 
 struct Renderer::Impl {
   int width, height;
+  int ss = 1;  // supersampling: the framebuffer is ss times the image on each side
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
   GLuint fbo = 0, color_rb = 0, depth_rb = 0;
@@ -60,16 +62,24 @@ Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
   if (!eglMakeCurrent(r.display, EGL_NO_SURFACE, EGL_NO_SURFACE, r.context))
     throw RenderError("cannot make the OpenGL context current");
 
+  // Antialiasing by supersampling: drawn 3x (2x for large images) on each side and averaged
+  // down, which smooths the mesh's silhouette, the shadow and the text alike.
+  GLint max_size = 4096;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  r.ss = std::clamp(std::min(3, max_size / std::max(width, height)), 1, 3);
+  if (std::max(width, height) > 2048) r.ss = std::min(r.ss, 2);
+  const int fw = r.ss * width, fh = r.ss * height;
   glGenFramebuffers(1, &r.fbo);
   glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
   glGenRenderbuffers(1, &r.color_rb);
   glBindRenderbuffer(GL_RENDERBUFFER, r.color_rb);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, fw, fh);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r.color_rb);
   glGenRenderbuffers(1, &r.depth_rb);
   glBindRenderbuffer(GL_RENDERBUFFER, r.depth_rb);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r.depth_rb);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, fw, fh);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                            r.depth_rb);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw RenderError("incomplete framebuffer");
 
@@ -85,43 +95,90 @@ Renderer::~Renderer() {
   eglTerminate(impl_->display);
 }
 
-Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
-                       const std::vector<Rgb>& colors, const Camera& cam, const Legend* legend) {
-  // A stop asked for (Ctrl-C) while a run's pictures are drawn: before another large render.
-  if (const int sig = stop_requested()) throw Interrupted(sig, "while writing the outputs");
-  Impl& r = *impl_;
-  eglMakeCurrent(r.display, EGL_NO_SURFACE, EGL_NO_SURFACE, r.context);
-  glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
-  glViewport(0, 0, r.width, r.height);
-  glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+namespace {
 
-  // Orthographic camera fitted to the bounding sphere; the mesh takes the left part of the image
-  // when a legend is drawn.
-  const Vec3 centre =
-      x.cols() ? Vec3(0.5 * (x.rowwise().minCoeff() + x.rowwise().maxCoeff())) : Vec3::Zero();
-  double radius = 1e-12;
-  for (Eigen::Index p = 0; p < x.cols(); ++p) radius = std::max(radius, (x.col(p) - centre).norm());
-  const double mesh_w = legend ? 0.8 : 1.0;  // share of the width for the mesh
-  const double aspect = mesh_w * r.width / r.height;
+// The orbit camera that frames the points tightly: their extent as the camera sees them, plus
+// the margin, fills the viewport of the given aspect, whatever the form's size or shape.
+OrbitCamera framing(const Points& x, const Camera& cam, double aspect) {
   OrbitCamera orbit;
   orbit.azimuth = cam.azimuth;
   orbit.elevation = cam.elevation;
-  orbit.fit(centre, radius, cam.margin * std::max(1.0, 1.0 / aspect));
-  orbit.depth = 2.0 * radius * cam.margin;
-  // Squeeze into the left mesh_w of the image.
+  if (x.cols() == 0) return orbit;
+  const Eigen::Matrix3d rot = orbit.rotation();
+  const Eigen::Matrix3Xd seen = rot * x;
+  const Vec3 lo = seen.rowwise().minCoeff(), hi = seen.rowwise().maxCoeff();
+  const Vec3 mid = 0.5 * (lo + hi), ext = (hi - lo).cwiseMax(1e-12);
+  orbit.target = rot.transpose() * mid;
+  orbit.half_height = 0.5 * cam.margin * std::max(ext.y(), ext.x() / aspect);
+  orbit.depth = cam.margin * std::max(ext.norm(), 1e-12);
+  return orbit;
+}
+
+// The supersampled framebuffer averaged down to the image, rows from the top.
+Image downsample(const Image& big, int ss) {
+  if (ss == 1) return big;
+  Image img = blank_image(big.width / ss, big.height / ss);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        int sum = 0;
+        for (int dy = 0; dy < ss; ++dy)
+          for (int dx = 0; dx < ss; ++dx)
+            sum += big.rgb[((static_cast<size_t>(y * ss + dy)) * big.width + x * ss + dx) * 3 + c];
+        img.rgb[(static_cast<size_t>(y) * img.width + x) * 3 + c] =
+            static_cast<std::uint8_t>((sum + ss * ss / 2) / (ss * ss));
+      }
+  return img;
+}
+
+}  // namespace
+
+Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
+                       const std::vector<Rgb>& colors, const Camera& cam, const Legend* legend,
+                       const std::string& caption) {
+  // A stop asked for (Ctrl-C) while a run's pictures are drawn: before another large render.
+  if (const int sig = stop_requested()) throw Interrupted(sig, "while writing the outputs");
+  Impl& r = *impl_;
+  const int fw = r.ss * r.width, fh = r.ss * r.height;
+  eglMakeCurrent(r.display, EGL_NO_SURFACE, EGL_NO_SURFACE, r.context);
+  glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
+  glViewport(0, 0, fw, fh);
+  glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+  glClearStencil(0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+
+  std::string title = legend ? legend->title : "";
+  if (!caption.empty()) title = title.empty() ? caption : caption + " \u00b7 " + title;
+  // The form takes the image below the heading and left of the legend.
+  const double band = title.empty() ? 0.0 : GlPainter::heading_band(fh) / static_cast<double>(fh);
+  const double mesh_w = legend ? 0.8 : 1.0, mesh_h = 1.0 - band;
+  // The shadow's ground a little below the form; it is framed with the form.
+  double ground = 0.0, size = 0.0;
+  if (x.cols()) {
+    ground = x.row(2).minCoeff();
+    size = (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).norm();
+    ground -= 0.02 * size;
+  }
+  Points framed(3, 2 * x.cols());
+  framed << x, x;
+  if (x.cols()) framed.block(2, x.cols(), 1, x.cols()).setConstant(ground);
+  const double aspect = mesh_w * fw / (mesh_h * fh);
+  const OrbitCamera orbit = framing(framed, cam, aspect);
   Eigen::Matrix4d squeeze = Eigen::Matrix4d::Identity();
   squeeze(0, 0) = mesh_w;
   squeeze(0, 3) = -(1.0 - mesh_w);
+  squeeze(1, 1) = mesh_h;
+  squeeze(1, 3) = -band;
   const Eigen::Matrix4f vp = (squeeze * orbit.view_projection(aspect)).cast<float>();
   const Eigen::Matrix3f rotf = orbit.rotation().cast<float>();
 
+  if (cam.shadow && x.cols()) r.painter->shadow(x, tris, ground, 0.03 * size, vp);
   glEnable(GL_DEPTH_TEST);
   r.painter->mesh(x, tris, colors, vp, rotf);
   glDisable(GL_DEPTH_TEST);
-  if (legend) r.painter->legend(*legend, r.width, r.height);
-
-  return read_pixels(r.width, r.height);
+  if (legend) r.painter->legend(*legend, fw, fh);
+  if (!title.empty()) r.painter->heading(title, fw, fh);
+  return downsample(read_pixels(fw, fh), r.ss);
 }
 
 Image read_pixels(int width, int height) {

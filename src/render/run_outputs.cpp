@@ -11,7 +11,10 @@ StagedRun stage_run_outputs(const Scene& scene, const RunResult& r, const Pictur
   out.add("report.json", [&](std::ostream& os) { os << report.dump(2) << '\n'; });
   if (r.solve.diverged) return {true, ""};
   stage_run_files(scene, r, opts, out);
-  return {false, stage_run_pictures(scene, r, opts, out)};
+  const std::string note = stage_run_pictures(scene, r, opts, out);
+  stage_report_page(
+      page_from_staged(out, scene.name, scene.description, run_scales(run_colors(r, opts))), out);
+  return {false, note};
 }
 
 }  // namespace membra

@@ -31,16 +31,19 @@ void stage_curvature_map(const RunResult& r, const RunColors& c, const PictureOp
     t_lo = opts.curvature_range[0], t_hi = opts.curvature_range[1];
   const int pw = 800, ph = 700;
   Renderer panel(pw, ph);
-  const Camera above{-90.0, 89.9, 1.1};
   const std::vector<Rgb> measured = colorize(c.curvature, t_lo, t_hi);
   Image side = blank_image(3 * pw, ph);
+  const Camera flat{-90.0, 89.9, 1.1, false};
   blit(side,
-       panel.render(mesh.model.reference, mesh.triangles, colorize(target_mm, t_lo, t_hi), above,
-                    nullptr),
+       panel.render(mesh.model.reference, mesh.triangles, colorize(target_mm, t_lo, t_hi), flat,
+                    nullptr, "Target"),
        0, 0);
-  blit(side, panel.render(mesh.model.reference, mesh.triangles, measured, above, nullptr), pw, 0);
-  const Legend legend{"Target | measured | form", "1/mm^2", t_lo, t_hi};
-  blit(side, panel.render(x, mesh.triangles, measured, camera, &legend), 2 * pw, 0);
+  blit(side,
+       panel.render(mesh.model.reference, mesh.triangles, measured, flat, nullptr,
+                    "Measured, on the flat sheet"),
+       pw, 0);
+  const Legend legend{"Gaussian curvature", "1/mm^2", t_lo, t_hi};
+  blit(side, panel.render(x, mesh.triangles, measured, camera, &legend, "Form"), 2 * pw, 0);
   add_png(out, "curvature_map.png", side);
 }
 
@@ -65,7 +68,9 @@ void stage_frames(const RunResult& r, const Camera& camera, Renderer& renderer, 
     char name[64];
     std::snprintf(name, sizeof name, "frames/frame_%03zu.png", i + 1);
     add_png(out, name, renderer.render(r.frames[i].x, mesh.triangles, colors, camera, &legend));
-    blit(sheet, tiles.render(r.frames[i].x, mesh.triangles, colors, camera, nullptr),
+    char caption[32];
+    std::snprintf(caption, sizeof caption, "%zu", i + 1);
+    blit(sheet, tiles.render(r.frames[i].x, mesh.triangles, colors, camera, nullptr, caption),
          static_cast<int>(i) % cols * tw, static_cast<int>(i) / cols * th);
   }
   add_png(out, "contact_sheet.png", sheet);

@@ -21,8 +21,10 @@ TEST_P(Budget, ARunStopsAtItsWallTimeBudgetAndSaysSo) {
       kExp3, {"simulation.max_seconds=1", std::string("simulation.solver=") + GetParam()});
   const Stopwatch clock;
   const RunResult r = run_scene(scene);
-  // The budget is checked at every convergence check; the end-of-run summary comes on top.
-  EXPECT_LT(clock.seconds(), 10.0);
+  // The budget is checked at every convergence check; the end-of-run summary (a stability check
+  // of a 41 x 41 sheet) comes on top, and ctest runs a browser or a sweep beside this test: a
+  // loose bound, still far below the minute the run would take.
+  EXPECT_LT(clock.seconds(), 30.0);
   EXPECT_TRUE(r.out_of_time);
   EXPECT_FALSE(r.solve.converged);
   EXPECT_NE(r.solve.message.find("simulation.max_seconds = 1"), std::string::npos)

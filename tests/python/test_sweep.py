@@ -138,6 +138,13 @@ def test_a_sweep_on_a_real_scheduler_survives_a_killed_worker(root, tmp_path, cl
     assert len(table) == 8 and (table["error"] == "").all(), table["error"].tolist()
     assert (Path(tmp_path / "a" / "results.csv")).is_file()
     assert (Path(tmp_path / "a" / "contact_sheet.png")).stat().st_size > 10_000
+    # The sweep's page: a sortable table, one row per scene with a thumbnail linking to the
+    # scene's own report.html.
+    page = (tmp_path / "a" / "report.html").read_text()
+    assert page.count("<tr>") == 8 + 1 and "th.addEventListener('click'" in page
+    for i in range(8):
+        assert f'<a href="scenes/{i:04d}/report.html"><img src="scenes/{i:04d}/curvature.png"' in page
+        assert (tmp_path / "a" / "scenes" / f"{i:04d}" / "report.html").is_file()
     # The same physics on one local worker, from scratch.
     alone = membra.sweep(spec, out=tmp_path / "b", workers=1)
     pd.testing.assert_frame_equal(physics(table), physics(alone))

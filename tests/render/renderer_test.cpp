@@ -1,12 +1,24 @@
 // Headless renders: size, coverage, colours from the map, and the legend.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "membra/geometry/grid_sheet.hpp"
 #include "membra/geometry/triangulation.hpp"
 #include "membra/render/renderer.hpp"
 
 namespace membra {
 namespace {
+
+// A pixel next to the white background (the mesh's antialiased silhouette blends into it).
+bool edge(const Image& img, int x, int y) {
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int u = std::clamp(x + dx, 0, img.width - 1), v = std::clamp(y + dy, 0, img.height - 1);
+      if (img.pixel(u, v).minCoeff() > 0.95f) return true;
+    }
+  return false;
+}
 
 TEST(Renderer, ShadedMeshAndLegendUseTheColourMap) {
   const GridSheet g({0.2, 0.1, 21, 11});
@@ -21,7 +33,9 @@ TEST(Renderer, ShadedMeshAndLegendUseTheColourMap) {
   }
   Renderer renderer(640, 480);
   const Legend legend{"test", "m", 0.0, 0.2};
-  const Image img = renderer.render(x, tris, colors, Camera{}, &legend);
+  Camera camera;
+  camera.shadow = false;  // only map colours and the text's grey (the shadow: its own test)
+  const Image img = renderer.render(x, tris, colors, camera, &legend);
   ASSERT_EQ(img.width, 640);
   ASSERT_EQ(img.height, 480);
   ASSERT_EQ(img.rgb.size(), 640u * 480u * 3u);
@@ -34,6 +48,7 @@ TEST(Renderer, ShadedMeshAndLegendUseTheColourMap) {
       const Rgb c = img.pixel(xx, y);
       if (c.minCoeff() > 0.95f) continue;                 // background
       if (c.maxCoeff() - c.minCoeff() < 0.05f) continue;  // the title's grey text
+      if (edge(img, xx, y)) continue;  // antialiased silhouette: mixed with the background
       ++covered;
       EXPECT_LT(std::min(c.x(), c.z()), 0.02f) << xx << "," << y;
       reddish += c.x() > 0.3f;
@@ -44,11 +59,14 @@ TEST(Renderer, ShadedMeshAndLegendUseTheColourMap) {
   EXPECT_GT(reddish, 100);
   EXPECT_GT(bluish, 100);
 
-  // The legend bar: pure red at its top, green in the middle, blue at its bottom.
-  const int bar_x = static_cast<int>(0.855 * img.width);
-  const Rgb top = img.pixel(bar_x, static_cast<int>(0.16 * img.height));
-  const Rgb mid = img.pixel(bar_x, img.height / 2);
-  const Rgb bottom = img.pixel(bar_x, static_cast<int>(0.84 * img.height));
+  // The legend bar (0.82 to 0.842 of the width; from 4.6 text heights below the top to 2 above
+  // the bottom, a text height being 1/34 of the image's): red at its top, green in the middle,
+  // blue at its bottom.
+  const int bar_x = static_cast<int>(0.831 * img.width);
+  const double px = img.height / 34.0, bar_top = 4.6 * px, bar_bottom = img.height - 2.0 * px;
+  const Rgb top = img.pixel(bar_x, static_cast<int>(bar_top + 3));
+  const Rgb mid = img.pixel(bar_x, static_cast<int>(0.5 * (bar_top + bar_bottom)));
+  const Rgb bottom = img.pixel(bar_x, static_cast<int>(bar_bottom - 3));
   EXPECT_GT(top.x(), 0.9f);
   EXPECT_GT(mid.y(), 0.9f);
   EXPECT_GT(bottom.z(), 0.9f);
@@ -59,6 +77,93 @@ TEST(Renderer, ShadedMeshAndLegendUseTheColourMap) {
       dark += img.pixel(xx, y).maxCoeff() < 0.3f;
   EXPECT_GT(dark, 50);
   EXPECT_GT(encode_png(img).size(), 1000u);
+}
+
+}  // namespace
+}  // namespace membra
+
+namespace membra {
+namespace {
+
+// A bumpy sheet 0.2 x 0.1 m, coloured by x.
+struct TestSheet {
+  Points x;
+  std::vector<Triangle> tris;
+  std::vector<Rgb> colors;
+};
+TestSheet test_sheet(double bump) {
+  const GridSheet g({0.2, 0.1, 21, 11});
+  TestSheet s{Points(3, g.num_particles()), triangulate(g), {}};
+  for (int p = 0; p < g.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    const Vec2 q = g.position(i, j);
+    s.x.col(p) = Vec3(q.x(), q.y(), bump * std::sin(10.0 * q.x()));
+    s.colors.push_back(colormap(q.x(), 0.0, 0.2));
+  }
+  return s;
+}
+
+// Every label stays inside the picture at any size: its outermost ring of pixels is background.
+TEST(Renderer, LabelsStayInsideTheImageAtAnySize) {
+  const TestSheet s = test_sheet(0.02);
+  const Legend legend{"Gaussian curvature of a rather long title that has to shrink to fit",
+                      "1/mm^2", -1.88e-5, 1.88e-5};
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{
+           {160, 120}, {320, 240}, {1200, 900}, {1600, 400}, {300, 900}}) {
+    Renderer renderer(w, h);
+    const Image img = renderer.render(s.x, s.tris, s.colors, Camera{}, &legend, "Form");
+    int touching = 0;
+    for (int x = 0; x < w; ++x)
+      touching += (img.pixel(x, 0).minCoeff() < 0.97f) + (img.pixel(x, h - 1).minCoeff() < 0.97f);
+    for (int y = 0; y < h; ++y)
+      touching += (img.pixel(0, y).minCoeff() < 0.97f) + (img.pixel(w - 1, y).minCoeff() < 0.97f);
+    EXPECT_EQ(touching, 0) << w << " x " << h;
+  }
+}
+
+// Supersampling: the silhouette of a flat blue sheet seen from above has pixels between blue
+// and white; without it every pixel would be one or the other.
+TEST(Renderer, EdgesAreAntialiased) {
+  TestSheet s = test_sheet(0.0);
+  std::fill(s.colors.begin(), s.colors.end(), Rgb(0.0f, 0.0f, 1.0f));
+  Renderer renderer(200, 150);
+  const Image img =
+      renderer.render(s.x, s.tris, s.colors, Camera{-90.0, 80.0, 1.1, false}, nullptr);
+  int mixed = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const float r = img.pixel(x, y).x();  // 0 on the sheet, 1 on the background
+      mixed += r > 0.15f && r < 0.85f;
+    }
+  EXPECT_GT(mixed, 20);
+}
+
+// The soft shadow: grey pixels under the form with it, none without it.
+TEST(Renderer, SoftShadowOnTheGround) {
+  const TestSheet s = test_sheet(0.02);
+  Renderer renderer(320, 240);
+  auto grey_pixels = [&](bool shadow) {
+    const Image img =
+        renderer.render(s.x, s.tris, s.colors, Camera{-60.0, 35.0, 1.1, shadow}, nullptr);
+    int grey = 0, levels = 0;
+    std::vector<bool> seen(256, false);
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const Rgb c = img.pixel(x, y);
+        if (c.maxCoeff() - c.minCoeff() < 0.06f && c.maxCoeff() < 0.97f) {
+          ++grey;
+          const int v = static_cast<int>(c.x() * 255);
+          levels += !seen[static_cast<size_t>(v)];
+          seen[static_cast<size_t>(v)] = true;
+        }
+      }
+    return std::pair(grey, levels);
+  };
+  const auto [with, levels] = grey_pixels(true);
+  const auto [without, unused] = grey_pixels(false);
+  EXPECT_GT(with, 500);
+  EXPECT_GT(levels, 8);  // a soft penumbra, not one flat grey
+  EXPECT_LT(without, 50);
 }
 
 }  // namespace

@@ -36,6 +36,10 @@ class OutputSet {
   // if a stop was requested.
   void commit();
   const std::filesystem::path& dir() const { return dir_; }
+  // The temporary file holding staged `name` (to read back what was written), or an empty path.
+  std::filesystem::path staged(const std::string& name) const;
+  // The names of the staged files, relative to dir(), in the order they were added.
+  std::vector<std::string> names() const;
 
  private:
   std::filesystem::path dir_;

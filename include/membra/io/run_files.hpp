@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "membra/io/output_set.hpp"
+#include "membra/io/report_page.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {
@@ -27,8 +28,11 @@ struct RunColors {
   double k_lo = 0.0, k_hi = 0.0, s_lo = 0.0, s_hi = 0.0;
 };
 RunColors run_colors(const RunResult& r, const PictureOptions& opts);
+// The two colourings of final.glb (curvature, stress) for report.html's legends.
+std::vector<ColourScale> run_scales(const RunColors& c);
 
-// Stages final.obj, final.ply (curvature colours, curvature and stress properties), each
+// Stages final.obj, final.ply (curvature colours, curvature and stress properties), final.glb
+// (both colourings and both values, io/gltf.hpp), each
 // explored branch's branches/N/final.obj and, when the scene has resin, the stencil pattern.svg
 // and pattern.dxf, in `out` (not committed).
 void stage_run_files(const Scene& scene, const RunResult& r, const PictureOptions& opts,

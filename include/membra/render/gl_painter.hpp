@@ -16,7 +16,7 @@ namespace membra {
 // A colour bar: the map's range and what it shows.
 struct Legend {
   std::string title;  // e.g. "Gaussian curvature"
-  std::string unit;   // e.g. "1/mm^2"
+  std::string unit;   // the unit of lo and hi, e.g. "1/mm^2"; shown in a readable one
   double lo = 0.0, hi = 1.0;
 };
 
@@ -41,11 +41,23 @@ class GlPainter {
   // Unlit filled triangles given in pixels of a width x height viewport (origin top-left).
   void pixel_triangles(const std::vector<Vec3>& corners, const std::vector<Rgb>& colors, int width,
                        int height);
-  // Text in pixels (origin top-left, `scale` x stb_easy_font's 7-pixel glyphs).
-  void text(const std::string& str, float x, float y, float scale, const Rgb& color, int width,
-            int height);
-  // The colour bar with five labelled ticks, title and unit, in the right sixth of the viewport.
+  // The form's soft shadow on the plane z = ground_z below it, lit from straight above, its
+  // penumbra `blur` wide (world units). Drawn before the form, without depth; needs a stencil.
+  void shadow(const Points& x, const std::vector<Triangle>& triangles, double ground_z, double blur,
+              const Eigen::Matrix4f& view_projection);
+  // A line of antialiased text (font.hpp), its box's top-left corner at pixel (x, y) of a width
+  // x height viewport (origin top-left), `pixel_height` pixels high.
+  void text(const std::string& str, float x, float y, float pixel_height, const Rgb& color,
+            int width, int height);
+  // The title at the top-left, shrunk when it would not fit the width.
+  void heading(const std::string& title, int width, int height);
+  // The colour bar with five ticks labelled in readable units (core/readable_units.hpp) and the
+  // unit above it, in the right fifth of the viewport below the heading band; the labels shrink
+  // rather than leave the viewport.
   void legend(const Legend& legend, int width, int height);
+  // The pictures' text height for a viewport `height` pixels high, and the band the heading takes.
+  static float text_size(int height);
+  static float heading_band(int height);
 
  private:
   struct Impl;

@@ -26,7 +26,8 @@ class RenderError : public std::runtime_error {
 struct Camera {
   double azimuth = -60.0;
   double elevation = 35.0;
-  double margin = 1.1;  // the bounding sphere fills 1/margin of the shorter image side
+  double margin = 1.1;  // the form's extent as seen fills 1/margin of the picture
+  bool shadow = true;   // a soft shadow on the ground below the form
 };
 
 // An RGB image, rows from the top.
@@ -45,10 +46,13 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Shaded mesh (positions in any unit, per-vertex colours) on a white background, orthographic
-  // from the camera, with the legend on the right when given.
+  // Shaded mesh (positions in any unit, per-vertex colours) on a white background with its soft
+  // shadow, orthographic from the camera and framed tightly, with the legend on the right when
+  // given and a heading (caption, then the legend's title) at the top. Antialiased by
+  // supersampling; every label stays inside the image.
   Image render(const Points& x, const std::vector<Triangle>& triangles,
-               const std::vector<Rgb>& colors, const Camera& camera, const Legend* legend);
+               const std::vector<Rgb>& colors, const Camera& camera, const Legend* legend,
+               const std::string& caption = {});
 
  private:
   struct Impl;

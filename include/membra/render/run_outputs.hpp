@@ -1,6 +1,7 @@
 #pragma once
 // Every file of a finished run, as `membra run` and the Python module's Result.write stage them:
-// report.json, and unless the run diverged the meshes, the stencil and the pictures. One place,
+// report.json, and unless the run diverged the meshes, the stencil, the pictures and the page
+// that shows them (report.html). One place,
 // so that every front end writes the same files byte for byte.
 #include <string>
 

@@ -1,0 +1,77 @@
+// final.glb: written with tinygltf, read back with tinygltf.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "membra/core/input_error.hpp"
+#include "membra/geometry/grid_sheet.hpp"
+#include "membra/io/gltf.hpp"
+
+namespace membra {
+namespace {
+
+TEST(Gltf, WritesAndReadsBackVerticesColoursAndValues) {
+  const GridSheet g({0.03, 0.02, 7, 5});
+  GlbSheet s{Points(3, g.num_particles()), triangulate(g), {}, {}, {}, {}, {{"name", "test"}}};
+  for (int p = 0; p < g.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    const Vec2 q = g.position(i, j);
+    s.x.col(p) = Vec3(q.x(), q.y(), 0.01 * q.x() * q.y() / 0.0006);
+    s.curvature.push_back(1e-5 * (p - 17));
+    s.stress.push_back(0.01 * p);
+    s.curvature_colors.push_back(colormap(s.curvature.back(), -2e-4, 2e-4));
+    s.stress_colors.push_back(colormap(s.stress.back(), -0.35, 0.35));
+  }
+  const auto file = std::filesystem::temp_directory_path() / "membra_gltf_test.glb";
+  {
+    std::ofstream out(file, std::ios::binary);
+    write_glb(out, s);
+  }
+  std::ifstream in(file, std::ios::binary);
+  char magic[4];
+  in.read(magic, 4);
+  EXPECT_EQ(std::string(magic, 4), "glTF");  // binary glTF, not JSON glTF
+
+  const GlbSheet r = read_glb(file);
+  ASSERT_EQ(r.x.cols(), s.x.cols());
+  EXPECT_LT((r.x - s.x).cwiseAbs().maxCoeff(), 1e-9);  // float mm: 1e-6 mm of 30 mm
+  ASSERT_EQ(r.triangles.size(), s.triangles.size());
+  for (size_t t = 0; t < s.triangles.size(); ++t) EXPECT_EQ(r.triangles[t], s.triangles[t]);
+  ASSERT_EQ(r.curvature_colors.size(), s.curvature_colors.size());
+  for (size_t p = 0; p < s.curvature_colors.size(); ++p) {
+    EXPECT_LT((r.curvature_colors[p] - s.curvature_colors[p]).cwiseAbs().maxCoeff(), 1e-5f);
+    EXPECT_LT((r.stress_colors[p] - s.stress_colors[p]).cwiseAbs().maxCoeff(), 1e-5f);
+    EXPECT_NEAR(r.curvature[p], s.curvature[p], 1e-6 * std::abs(s.curvature[p]) + 1e-12);
+    EXPECT_NEAR(r.stress[p], s.stress[p], 1e-6);
+  }
+  EXPECT_EQ(r.extras.value("unit", ""), "mm");
+  EXPECT_EQ(r.extras.value("name", ""), "test");
+  std::filesystem::remove(file);
+}
+
+TEST(Gltf, ColoursAreLinearInTheFile) {
+  // glTF's vertex colours are linear: sRGB 0.5 is stored as 0.214.
+  EXPECT_NEAR(srgb_to_linear(0.5f), 0.214f, 1e-3f);
+  for (float c : {0.0f, 0.01f, 0.3f, 0.7f, 1.0f})
+    EXPECT_NEAR(linear_to_srgb(srgb_to_linear(c)), c, 1e-5f);
+}
+
+TEST(Gltf, RefusesMismatchedArraysAndUnreadableFiles) {
+  GlbSheet s{Points::Zero(3, 3), {Triangle(0, 1, 2)}, {}, {}, {}, {}, {}};
+  std::ostringstream out;
+  EXPECT_THROW(write_glb(out, s), InputError);
+  const auto file = std::filesystem::temp_directory_path() / "membra_not_a.glb";
+  std::ofstream(file) << "not glTF";
+  try {
+    read_glb(file);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos);
+  }
+  std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace membra

@@ -1,0 +1,79 @@
+// report.html: what the page holds (the browser test, tests/browser/, opens it for real).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "membra/io/report_page.hpp"
+
+namespace membra {
+namespace {
+
+namespace fs = std::filesystem;
+
+ReportPage test_page() {
+  ReportPage p;
+  p.title = "bowl <test>";
+  p.description = "An ellipse & its ring";
+  p.report = {{"status", "converged"},
+              {"stability", {{"stable", true}}},
+              {"shape", {{"height", 81.75}}},
+              {"stress", {{"min", -0.00042}, {"max", 1.2}}},
+              {"particles", 441}};
+  p.pictures = {"curvature.png"};
+  p.stencil_svg = "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"></svg>";
+  p.glb = {'g', 'l', 'T', 'F'};
+  p.scales = {{"Gaussian curvature", "1/mm^2", -6e-4, 6e-4}, {"Stress", "MPa", -1.2, 1.2}};
+  p.files = {"report.json", "final.glb"};
+  return p;
+}
+
+TEST(ReportPage, HoldsTheNumbersWithUnitsThePicturesTheStencilAndTheModel) {
+  const std::string html = make_report_page(test_page(), true);
+  EXPECT_NE(html.find("<h1>bowl &lt;test&gt;</h1>"), std::string::npos);  // escaped
+  EXPECT_NE(html.find("An ellipse &amp; its ring"), std::string::npos);
+  EXPECT_NE(html.find("81.8 mm"), std::string::npos);          // three significant digits
+  EXPECT_NE(html.find("\u22120.420 kPa"), std::string::npos);  // a small stress in kPa
+  EXPECT_NE(html.find("<td>441</td>"), std::string::npos);     // a count as a count
+  EXPECT_NE(html.find("<img src=\"curvature.png\""), std::string::npos);
+  EXPECT_NE(html.find("<div class=\"stencil\"><svg"), std::string::npos);  // inline, no XML prolog
+  EXPECT_NE(html.find("const MEMBRA_GLB = \"Z2xURg==\""), std::string::npos);  // base64 "glTF"
+  EXPECT_NE(html.find("report_files/three.min.js"), std::string::npos);
+  EXPECT_NE(html.find("1/m²"), std::string::npos);                // the legend's readable unit
+  EXPECT_EQ(html.find("Stable forms found"), std::string::npos);  // absent keys give no row
+}
+
+TEST(ReportPage, WithoutThreeJsTheViewIsLeftOutWithANote) {
+  const std::string html = make_report_page(test_page(), false, "No 3-D view: test");
+  EXPECT_EQ(html.find("three.min.js"), std::string::npos);
+  EXPECT_NE(html.find("No 3-D view: test"), std::string::npos);
+}
+
+TEST(ReportPage, StagesTheScriptsBesideThePage) {
+  const fs::path dir = fs::temp_directory_path() / "membra_report_page_test";
+  fs::remove_all(dir);
+  {
+    OutputSet out(dir);
+    stage_report_page(test_page(), out);
+    out.commit();
+  }
+  EXPECT_TRUE(fs::exists(dir / "report.html"));
+  if (fs::exists(three_js_dir() / "three.min.js")) {
+    EXPECT_GT(fs::file_size(dir / "report_files" / "three.min.js"), 100000u);
+    EXPECT_TRUE(fs::exists(dir / "report_files" / "GLTFLoader.js"));
+    EXPECT_TRUE(fs::exists(dir / "report_files" / "OrbitControls.js"));
+  }
+  fs::remove_all(dir);
+}
+
+TEST(ReportPage, Base64OfEveryTailLength) {
+  EXPECT_EQ(base64({}), "");
+  EXPECT_EQ(base64({'f'}), "Zg==");
+  EXPECT_EQ(base64({'f', 'o'}), "Zm8=");
+  EXPECT_EQ(base64({'f', 'o', 'o'}), "Zm9v");
+}
+
+}  // namespace
+}  // namespace membra
