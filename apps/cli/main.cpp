@@ -118,7 +118,8 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   out.commit();
   if (!quiet) {
     std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"
-              << "results in " << out.dir().string() << "/ (final.obj, final.ply, report.json"
+              << "results in " << out.dir().string()
+              << "/ (report.html, final.glb, final.obj, final.ply, report.json"
               << (r.solve.converged ? "" : "; not an equilibrium")
               << (render_note.empty() ? ", curvature.png, stress.png" : "") << ")\n";
   }

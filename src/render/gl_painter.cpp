@@ -26,10 +26,12 @@ out vec3 shade;
 void main() {
   gl_Position = view_projection * vec4(position, 1.0);
   if (lit == 1) {
-    // Two-sided Lambert light from the viewer's upper left, plus ambient.
+    // Two-sided: a key light from the upper left, high above the viewer (so that a dome's
+    // crown and flanks differ), and a soft fill from the viewer, plus ambient.
     vec3 n = normalize(view_rotation * normal);
-    float d = abs(dot(n, normalize(vec3(-0.3, 0.4, 1.0))));
-    shade = color * (0.35 + 0.65 * d);
+    float key = abs(dot(n, normalize(vec3(-0.45, 0.85, 0.45))));
+    float fill = abs(dot(n, vec3(0.0, 0.0, 1.0)));
+    shade = color * (0.25 + 0.55 * key + 0.25 * fill);
   } else {
     shade = color;
   }
@@ -283,11 +285,11 @@ void GlPainter::text(const std::string& str, float x, float y, float pixel_heigh
   glDisable(GL_BLEND);
 }
 
-float GlPainter::text_size(int height) {
-  return std::clamp(static_cast<float>(height) / 34.0f, 9.0f, 64.0f);
+float GlPainter::text_size(int height) const {
+  return std::clamp(static_cast<float>(height) / 34.0f, 9.0f * pixel_scale_, 64.0f * pixel_scale_);
 }
 
-float GlPainter::heading_band(int height) {
+float GlPainter::heading_band(int height) const {
   return 2.4f * text_size(height);
 }
 

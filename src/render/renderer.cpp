@@ -84,6 +84,7 @@ Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
     throw RenderError("incomplete framebuffer");
 
   r.painter = std::make_unique<GlPainter>();
+  r.painter->set_pixel_scale(static_cast<float>(r.ss));
 }
 
 Renderer::~Renderer() {
@@ -150,7 +151,7 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
   std::string title = legend ? legend->title : "";
   if (!caption.empty()) title = title.empty() ? caption : caption + " \u00b7 " + title;
   // The form takes the image below the heading and left of the legend.
-  const double band = title.empty() ? 0.0 : GlPainter::heading_band(fh) / static_cast<double>(fh);
+  const double band = title.empty() ? 0.0 : r.painter->heading_band(fh) / static_cast<double>(fh);
   const double mesh_w = legend ? 0.8 : 1.0, mesh_h = 1.0 - band;
   // The shadow's ground a little below the form; it is framed with the form.
   double ground = 0.0, size = 0.0;

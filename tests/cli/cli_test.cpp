@@ -291,8 +291,14 @@ TEST_F(Cli, DesignWritesTheStencilTheFormAndTheErrorsAndRunReproducesIt) {
   ASSERT_EQ(o.code, 0) << o.text;
   EXPECT_NE(o.text.find("rms error"), std::string::npos) << o.text;
   for (const char* f : {"scene.json", "pattern.svg", "pattern.dxf", "final.obj", "final.ply",
-                        "target.obj", "comparison.png", "report.json"})
+                        "target.obj", "comparison.png", "report.json", "final.glb", "report.html"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
+  // The design's page: its title, its error among the key numbers, and its comparison picture.
+  std::ifstream page_in(out / "report.html");
+  const std::string page((std::istreambuf_iterator<char>(page_in)), {});
+  EXPECT_NE(page.find("<h1>Design: d</h1>"), std::string::npos);
+  EXPECT_NE(page.find("Design error (rms)"), std::string::npos);
+  EXPECT_NE(page.find("<img src=\"comparison.png\""), std::string::npos);
   json report;
   std::ifstream(out / "report.json") >> report;
   const json& d = report["design"];

@@ -55,13 +55,18 @@ class GlPainter {
   // unit above it, in the right fifth of the viewport below the heading band; the labels shrink
   // rather than leave the viewport.
   void legend(const Legend& legend, int width, int height);
-  // The pictures' text height for a viewport `height` pixels high, and the band the heading takes.
-  static float text_size(int height);
-  static float heading_band(int height);
+  // The pictures' text height for a viewport `height` pixels high (1/34 of it, at least 9 and at
+  // most 64 image pixels), and the band the heading takes.
+  float text_size(int height) const;
+  float heading_band(int height) const;
+  // Framebuffer pixels per image pixel (the renderer's supersampling), so that the bounds on
+  // the text's size hold in the image.
+  void set_pixel_scale(float scale) { pixel_scale_ = scale; }
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  float pixel_scale_ = 1.0f;
 };
 
 }  // namespace membra
