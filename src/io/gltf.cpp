@@ -18,7 +18,8 @@ namespace {
 
 tinygltf::Value to_value(const nlohmann::json& j) {
   if (j.is_boolean()) return tinygltf::Value(j.get<bool>());
-  if (j.is_number_integer()) return tinygltf::Value(j.get<int>());
+  if (j.is_number_integer() && j.get<std::int64_t>() == static_cast<int>(j.get<std::int64_t>()))
+    return tinygltf::Value(j.get<int>());
   if (j.is_number()) return tinygltf::Value(j.get<double>());
   if (j.is_string()) return tinygltf::Value(j.get<std::string>());
   if (j.is_array()) {
@@ -83,7 +84,16 @@ std::vector<float> linear_colors(const std::vector<Rgb>& colors) {
   return out;
 }
 
-// Positions in mm and smooth (area-weighted) normals, as float triples.
+// membra's z-up (x, y, z) in glTF's y-up axes: (x, z, -y), a turn of -90 degrees about x, so
+// that importers (Blender, three.js) show the form upright.
+Vec3 to_y_up(const Vec3& v) {
+  return {v.x(), v.z(), -v.y()};
+}
+Vec3 from_y_up(const Vec3& v) {
+  return {v.x(), -v.z(), v.y()};
+}
+
+// Positions in mm and smooth (area-weighted) normals, as float triples in glTF's axes.
 void vertex_arrays(const GlbSheet& s, std::vector<float>& pos, std::vector<float>& nrm) {
   Points normals = Points::Zero(3, s.x.cols());
   for (const Triangle& t : s.triangles) {
@@ -92,9 +102,10 @@ void vertex_arrays(const GlbSheet& s, std::vector<float>& pos, std::vector<float
   }
   for (Eigen::Index p = 0; p < s.x.cols(); ++p) {
     const Vec3 n = normals.col(p).norm() > 0 ? Vec3(normals.col(p).normalized()) : Vec3::UnitZ();
+    const Vec3 q = to_y_up(s.x.col(p) / units::mm), m = to_y_up(n);
     for (int k = 0; k < 3; ++k) {
-      pos.push_back(static_cast<float>(s.x(k, p) / units::mm));
-      nrm.push_back(static_cast<float>(n[k]));
+      pos.push_back(static_cast<float>(q[k]));
+      nrm.push_back(static_cast<float>(m[k]));
     }
   }
 }
@@ -108,13 +119,11 @@ float linear_to_srgb(float c) {
   return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
-void write_glb(std::ostream& out, const GlbSheet& s) {
+namespace {
+
+// The sheet's one primitive: its attributes and indices appended to m's buffer.
+tinygltf::Primitive sheet_primitive(tinygltf::Model& m, const GlbSheet& s) {
   const auto n = static_cast<size_t>(s.x.cols());
-  if (s.curvature_colors.size() != n || s.stress_colors.size() != n || s.curvature.size() != n ||
-      s.stress.size() != n)
-    throw InputError("final.glb", "colours or values do not match the vertices");
-  tinygltf::Model m;
-  m.buffers.resize(1);
   std::vector<float> pos, nrm;
   vertex_arrays(s, pos, nrm);
   tinygltf::Primitive prim;
@@ -142,13 +151,26 @@ void write_glb(std::ostream& out, const GlbSheet& s) {
     for (int c : t) idx.push_back(static_cast<std::uint32_t>(c));
   prim.indices = add_accessor(m, idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
                               idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  prim.material = 0;
+  return prim;
+}
+
+}  // namespace
+
+void write_glb(std::ostream& out, const GlbSheet& s) {
+  const auto n = static_cast<size_t>(s.x.cols());
+  if (s.curvature_colors.size() != n || s.stress_colors.size() != n || s.curvature.size() != n ||
+      s.stress.size() != n)
+    throw InputError("final.glb", "colours or values do not match the vertices");
+  tinygltf::Model m;
+  m.buffers.resize(1);
+  const tinygltf::Primitive prim = sheet_primitive(m, s);
   tinygltf::Material mat;
   mat.name = "membrane";
   mat.doubleSided = true;  // a sheet: both faces are seen
   mat.pbrMetallicRoughness.metallicFactor = 0.0;
   mat.pbrMetallicRoughness.roughnessFactor = 0.8;
   m.materials.push_back(mat);
-  prim.material = 0;
   tinygltf::Mesh mesh;
   mesh.name = "membrane";
   mesh.primitives.push_back(prim);
@@ -164,6 +186,7 @@ void write_glb(std::ostream& out, const GlbSheet& s) {
   m.asset.generator = std::string("membra ") + kVersion;
   nlohmann::json extras = s.extras;
   extras["unit"] = "mm";
+  extras["up"] = "membra's z is glTF's y: positions are (x, z, -y) of membra's";
   extras["attributes"] = {
       {"COLOR_0", "Gaussian curvature colours"},
       {"COLOR_1", "stress colours"},
@@ -182,9 +205,15 @@ std::vector<float> read_floats(const tinygltf::Model& m, const tinygltf::Primiti
                                const std::string& name, int components, const std::string& where) {
   const auto it = prim.attributes.find(name);
   if (it == prim.attributes.end()) throw InputError(where, "no " + name + " attribute");
-  const tinygltf::Accessor& a = m.accessors.at(static_cast<size_t>(it->second));
-  const tinygltf::BufferView& v = m.bufferViews.at(static_cast<size_t>(a.bufferView));
-  const auto& bytes = m.buffers.at(static_cast<size_t>(v.buffer)).data;
+  const auto bad = [&] { return InputError(where, name + " has no valid accessor or buffer"); };
+  if (it->second < 0 || static_cast<size_t>(it->second) >= m.accessors.size()) throw bad();
+  const tinygltf::Accessor& a = m.accessors[static_cast<size_t>(it->second)];
+  if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= m.bufferViews.size()) throw bad();
+  const tinygltf::BufferView& v = m.bufferViews[static_cast<size_t>(a.bufferView)];
+  if (v.buffer < 0 || static_cast<size_t>(v.buffer) >= m.buffers.size()) throw bad();
+  if (tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)) != components)
+    throw bad();
+  const auto& bytes = m.buffers[static_cast<size_t>(v.buffer)].data;
   const size_t count = a.count * static_cast<size_t>(components);
   const size_t offset = v.byteOffset + a.byteOffset;
   if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || offset + count * 4 > bytes.size())
@@ -192,6 +221,25 @@ std::vector<float> read_floats(const tinygltf::Model& m, const tinygltf::Primiti
   std::vector<float> out(count);
   std::memcpy(out.data(), bytes.data() + offset, count * 4);
   return out;
+}
+
+std::vector<std::uint32_t> read_indices(const tinygltf::Model& m, const tinygltf::Primitive& prim,
+                                        const std::string& where) {
+  if (prim.indices < 0 || static_cast<size_t>(prim.indices) >= m.accessors.size())
+    throw InputError(where, "the mesh has no indices");
+  const tinygltf::Accessor& ia = m.accessors[static_cast<size_t>(prim.indices)];
+  if (ia.bufferView < 0 || static_cast<size_t>(ia.bufferView) >= m.bufferViews.size())
+    throw InputError(where, "the indices have no buffer view");
+  const tinygltf::BufferView& iv = m.bufferViews[static_cast<size_t>(ia.bufferView)];
+  if (iv.buffer < 0 || static_cast<size_t>(iv.buffer) >= m.buffers.size())
+    throw InputError(where, "the indices have no buffer");
+  const auto& bytes = m.buffers[static_cast<size_t>(iv.buffer)].data;
+  if (ia.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT ||
+      iv.byteOffset + ia.byteOffset + ia.count * 4 > bytes.size())
+    throw InputError(where, "indices are not 32-bit inside the buffer");
+  std::vector<std::uint32_t> idx(ia.count);
+  std::memcpy(idx.data(), bytes.data() + iv.byteOffset + ia.byteOffset, ia.count * 4);
+  return idx;
 }
 
 std::vector<Rgb> srgb_colors(const std::vector<float>& linear) {
@@ -216,20 +264,17 @@ GlbSheet read_glb(const std::filesystem::path& file) {
   GlbSheet s;
   const auto pos = read_floats(m, prim, "POSITION", 3, where);
   s.x.resize(3, static_cast<Eigen::Index>(pos.size() / 3));
-  for (size_t i = 0; i < pos.size(); ++i)
-    s.x(static_cast<Eigen::Index>(i % 3), static_cast<Eigen::Index>(i / 3)) = pos[i] * units::mm;
+  for (size_t i = 0; i + 2 < pos.size(); i += 3)
+    s.x.col(static_cast<Eigen::Index>(i / 3)) =
+        from_y_up(Vec3(pos[i], pos[i + 1], pos[i + 2])) * units::mm;
   s.curvature_colors = srgb_colors(read_floats(m, prim, "COLOR_0", 3, where));
   s.stress_colors = srgb_colors(read_floats(m, prim, "COLOR_1", 3, where));
   for (float v : read_floats(m, prim, "_CURVATURE", 1, where)) s.curvature.push_back(v);
   for (float v : read_floats(m, prim, "_STRESS", 1, where)) s.stress.push_back(v);
-  const tinygltf::Accessor& ia = m.accessors.at(static_cast<size_t>(prim.indices));
-  const tinygltf::BufferView& iv = m.bufferViews.at(static_cast<size_t>(ia.bufferView));
-  const auto& bytes = m.buffers.at(static_cast<size_t>(iv.buffer)).data;
-  if (ia.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT ||
-      iv.byteOffset + ia.byteOffset + ia.count * 4 > bytes.size())
-    throw InputError(where, "indices are not 32-bit inside the buffer");
-  std::vector<std::uint32_t> idx(ia.count);
-  std::memcpy(idx.data(), bytes.data() + iv.byteOffset + ia.byteOffset, ia.count * 4);
+  const std::vector<std::uint32_t> idx = read_indices(m, prim, where);
+  for (std::uint32_t i : idx)
+    if (i >= static_cast<std::uint32_t>(s.x.cols()))
+      throw InputError(where, "an index is out of range");
   for (size_t i = 0; i + 2 < idx.size(); i += 3)
     s.triangles.emplace_back(static_cast<int>(idx[i]), static_cast<int>(idx[i + 1]),
                              static_cast<int>(idx[i + 2]));

@@ -71,7 +71,7 @@ constexpr Row kRows[] = {
     {"Energy", "/energy", "J", "elastic + bending + gravitational"},
     {"Design error (rms)", "/design/rms_error", "%", "of the target's diameter"},
     {"Curvature map correlation", "/curvature_map/correlation", "", "target against measured"},
-    {"Stable forms found", "/explore/branches", "", "distinct forms of simulation.explore"},
+    {"Stable forms found", "/explore/distinct_forms", "", "distinct forms of simulation.explore"},
     {"Solver", "/solver", "text", ""},
     {"Particles", "/particles", "", ""},
     {"Iterations", "/iterations", "", ""},
@@ -85,12 +85,15 @@ std::string key_numbers(const nlohmann::json& report) {
     const nlohmann::json* v = at(report, row.pointer);
     if (!v || v->is_null()) continue;
     std::string value;
-    if (v->is_number() && std::string(row.unit) != "text")
+    if (std::string(row.pointer) == "/stability/stable" &&
+        !report.value(nlohmann::json::json_pointer("/stability/checked"), true))
+      value = "not checked";
+    else if (v->is_number() && std::string(row.unit) != "text")
       value = number(v->get<double>(), row.unit);
     else
       value = v->is_string() ? v->get<std::string>() : v->dump();
     h << "<tr><th>" << row.label << "</th><td>" << html_escape(value) << "</td><td class=\"note\">"
-      << row.meaning << "</td></tr>\n";
+      << html_escape(row.meaning) << "</td></tr>\n";
   }
   h << "</table>\n";
   return h.str();
@@ -104,7 +107,8 @@ std::string scale_html(const ColourScale& s, size_t index) {
     << "style=\"background: linear-gradient(to right";
   for (int i = 0; i <= 10; ++i) {
     const Rgb c = colormap(s.lo + (s.hi - s.lo) * i / 10.0, s.lo, s.hi);
-    h << ", rgb(" << int(c.x() * 255) << "," << int(c.y() * 255) << "," << int(c.z() * 255) << ")";
+    const auto byte = [](float v) { return static_cast<int>(std::lround(v * 255.0f)); };
+    h << ", rgb(" << byte(c.x()) << "," << byte(c.y()) << "," << byte(c.z()) << ")";
   }
   h << ")\"></div><div class=\"ticks\">";
   const Ticks t = readable_ticks(s.lo, s.hi, s.unit, 5);
@@ -129,7 +133,7 @@ h1 { margin-bottom: 0.2em; } .sub { color: #555; margin-top: 0; }
 .pictures { display: grid; grid-template-columns: repeat(auto-fill, minmax(360px, 1fr)); gap: 1em; }
 .pictures figure { margin: 0; } .pictures img { width: 100%; border: 1px solid #eee; }
 .stencil svg { max-width: 100%; height: auto; border: 1px solid #eee; }
-#errors { color: #a00; white-space: pre-wrap; } .files li { font-family: monospace; }
+#errors, .warning { color: #a00; white-space: pre-wrap; } .files li { font-family: monospace; }
 )";
 
 // The 3-D view: parses the inlined final.glb with three.js's GLTFLoader, turns membra's z-up
@@ -148,6 +152,11 @@ const char* kViewScript = R"(
     document.body.dataset.errors = String(errors.length);
   }
   window.addEventListener('error', function (e) { fail(e.message); });
+  window.addEventListener('unhandledrejection', function (e) { fail(e.reason); });
+  if (typeof THREE === 'undefined' || !THREE.GLTFLoader || !THREE.OrbitControls) {
+    fail('3-D view: the scripts in report_files/ did not load (keep that folder beside the page)');
+    return;
+  }
   const canvas = document.getElementById('view-canvas');
   let renderer;
   try {
@@ -172,12 +181,18 @@ const char* kViewScript = R"(
     camera.updateProjectionMatrix();
     draw();
   }
-  controls.addEventListener('change', draw);
+  controls.addEventListener('change', function () {
+    // Clipping planes that follow the zoom, so that the form is never cut off.
+    const d = camera.position.distanceTo(controls.target);
+    camera.near = d / 100;
+    camera.far = d * 100;
+    camera.updateProjectionMatrix();
+    draw();
+  });
   window.addEventListener('resize', resize);
   const bytes = Uint8Array.from(atob(MEMBRA_GLB), function (c) { return c.charCodeAt(0); });
   new THREE.GLTFLoader().parse(bytes.buffer, '', function (gltf) {
     const root = gltf.scene;
-    root.rotation.x = -Math.PI / 2;  // membra's z up is three.js's y up
     scene.add(root);
     let mesh = null;
     root.traverse(function (o) { if (o.isMesh) mesh = o; });
@@ -193,8 +208,6 @@ const char* kViewScript = R"(
                                     -Math.cos(el) * Math.sin(az));
       const d = sphere.radius / Math.sin(camera.fov * Math.PI / 360) * 0.7;
       camera.position.copy(sphere.center).addScaledVector(dir, d);
-      camera.near = d / 100;
-      camera.far = d * 10;
       controls.target.copy(sphere.center);
       controls.update();
     }
@@ -290,6 +303,7 @@ std::string make_report_page(const ReportPage& page, bool with_view, const std::
     h << "<p class=\"sub\">" << html_escape(page.description) << "</p>\n";
   h << "<p class=\"note\">membra " << kVersion << ". Lengths in mm; every number is also in "
     << "<a href=\"report.json\">report.json</a>.</p>\n<pre id=\"errors\" hidden></pre>\n";
+  if (!page.note.empty()) h << "<p class=\"warning\">" << html_escape(page.note) << "</p>\n";
   h << "<div class=\"top\">\n";
   if (with_view)
     h << view_html(page);
@@ -298,9 +312,11 @@ std::string make_report_page(const ReportPage& page, bool with_view, const std::
   h << key_numbers(page.report) << "</div>\n";
   if (!page.pictures.empty()) {
     h << "<h2>Pictures</h2>\n<div class=\"pictures\">\n";
-    for (const auto& p : page.pictures)
-      h << "<figure><a href=\"" << p << "\"><img src=\"" << p << "\" alt=\"" << p
-        << "\"></a><figcaption>" << p << "</figcaption></figure>\n";
+    for (const auto& p : page.pictures) {
+      const std::string e = html_escape(p);
+      h << "<figure><a href=\"" << e << "\"><img src=\"" << e << "\" alt=\"" << e
+        << "\"></a><figcaption>" << e << "</figcaption></figure>\n";
+    }
     h << "</div>\n";
   }
   if (!page.stencil_svg.empty()) {
@@ -312,7 +328,8 @@ std::string make_report_page(const ReportPage& page, bool with_view, const std::
   }
   if (!page.files.empty()) {
     h << "<h2>Files</h2>\n<ul class=\"files\">\n";
-    for (const auto& f : page.files) h << "<li><a href=\"" << f << "\">" << f << "</a></li>\n";
+    for (const auto& f : page.files)
+      h << "<li><a href=\"" << html_escape(f) << "\">" << html_escape(f) << "</a></li>\n";
     h << "</ul>\n";
   }
   if (with_view) {
@@ -344,8 +361,10 @@ void stage_report_page(const ReportPage& page, OutputSet& out) {
 }
 
 ReportPage page_from_staged(const OutputSet& out, const std::string& title,
-                            const std::string& description, std::vector<ColourScale> scales) {
+                            const std::string& description, std::vector<ColourScale> scales,
+                            const std::string& note) {
   ReportPage page;
+  page.note = note;
   page.title = title;
   page.description = description;
   page.scales = std::move(scales);
@@ -356,9 +375,13 @@ ReportPage page_from_staged(const OutputSet& out, const std::string& title,
     page.glb.assign(bytes.begin(), bytes.end());
   }
   if (const fs::path f = out.staged("pattern.svg"); !f.empty()) page.stencil_svg = read_text(f);
+  // The pictures in the order a reader wants them: the form first, then the rest as staged
+  // (branches/N/curvature.png among them); the frames are in the contact sheet.
   for (const char* p : {"curvature.png", "curvature_global.png", "stress.png", "comparison.png",
                         "curvature_map.png", "contact_sheet.png", "pattern.png"})
     if (!out.staged(p).empty()) page.pictures.push_back(p);
+  for (const auto& name : out.names())
+    if (name.starts_with("branches/") && name.ends_with(".png")) page.pictures.push_back(name);
   page.files = out.names();
   page.files.push_back("report.html");
   return page;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -37,6 +38,9 @@ std::vector<char32_t> decode_utf8(const std::string& s) {
       ok = ok && (n >> 6) == 2;
       c = (c << 6) | (n & 0x3F);
     }
+    // Overlong forms, surrogates and code points beyond U+10FFFF are not text.
+    static constexpr char32_t kLeast[] = {0, 0x80, 0x800, 0x10000};
+    ok = ok && c >= kLeast[extra] && c <= 0x10FFFF && (c < 0xD800 || c > 0xDFFF);
     out.push_back(ok ? c : 0xFFFD);
     i += ok ? static_cast<size_t>(extra) + 1 : 1;
   }
@@ -55,10 +59,22 @@ Font::Font(const std::filesystem::path& ttf) : impl_(std::make_unique<Impl>()) {
                       ": cannot read the font (install fonts-dejavu-core "
                       "or set MEMBRA_FONT to a .ttf file)");
   impl_->data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  const int offset = stbtt_GetFontOffsetForIndex(impl_->data.data(), 0);
-  if (impl_->data.empty() || offset < 0 ||
-      !stbtt_InitFont(&impl_->info, impl_->data.data(), offset))
-    throw RenderError(ttf.string() + ": not a TrueType font");
+  // stb_truetype trusts its input: check the header and that the table directory lies inside
+  // the file before handing it over (an empty file, a .woff, a truncated download).
+  const auto& d = impl_->data;
+  const auto u32 = [&](size_t at) {
+    return (std::uint32_t(d[at]) << 24) | (std::uint32_t(d[at + 1]) << 16) |
+           (std::uint32_t(d[at + 2]) << 8) | std::uint32_t(d[at + 3]);
+  };
+  const bool header = d.size() >= 12 && (u32(0) == 0x00010000u || u32(0) == 0x74727565u);
+  const size_t tables = header ? (std::uint32_t(d[4]) << 8 | d[5]) : 0;
+  bool inside = header && 12 + 16 * tables <= d.size();
+  for (size_t t = 0; inside && t < tables; ++t) {
+    const size_t entry = 12 + 16 * t;
+    inside = std::uint64_t(u32(entry + 8)) + u32(entry + 12) <= d.size();
+  }
+  if (!inside || !stbtt_InitFont(&impl_->info, impl_->data.data(), 0))
+    throw RenderError(ttf.string() + ": not a TrueType font (or a truncated one)");
 }
 
 Font::~Font() = default;

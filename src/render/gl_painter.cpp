@@ -251,7 +251,9 @@ void GlPainter::text(const std::string& str, float x, float y, float pixel_heigh
                      int width, int height) {
   if (str.empty()) return;
   const TextBitmap t = Font::standard().rasterize(str, pixel_height);
+  if (pixel_height <= 0.0f) return;
   Impl& r = *impl_;
+  glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, r.texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, t.width, t.height, 0, GL_RED, GL_UNSIGNED_BYTE,
@@ -278,7 +280,6 @@ void GlPainter::text(const std::string& str, float x, float y, float pixel_heigh
                      pixel_matrix(width, height).data());
   glUniform3f(glGetUniformLocation(r.text_program, "ink"), color.x(), color.y(), color.z());
   glUniform1i(glGetUniformLocation(r.text_program, "coverage"), 0);
-  glActiveTexture(GL_TEXTURE0);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDrawArrays(GL_TRIANGLES, 0, 6);
@@ -296,10 +297,21 @@ float GlPainter::heading_band(int height) const {
 void GlPainter::heading(const std::string& title, int width, int height) {
   const float margin = 0.5f * text_size(height);
   const float room = static_cast<float>(width) - 2.0f * margin;
+  const float least = 7.0f * pixel_scale_;  // smaller than this is no longer legible
   float px = 1.3f * text_size(height);
-  const float w = Font::standard().width(title, px);
-  if (w > room) px *= room / w;  // shrunk to fit the width rather than cut off
-  text(title, margin, margin, px, Rgb(0.1f, 0.1f, 0.1f), width, height);
+  const Font& font = Font::standard();
+  // Shrunk to fit the width; where even the least legible size is too wide, shortened with an
+  // ellipsis rather than cut off by the image's edge.
+  if (const float w = font.width(title, px); w > room) px = std::max(least, px * room / w);
+  std::string shown = title;
+  while (!shown.empty() && font.width(shown + "\u2026", px) > room) {
+    shown.pop_back();
+    while (!shown.empty() && (static_cast<unsigned char>(shown.back()) & 0xC0) == 0x80)
+      shown.pop_back();  // a whole UTF-8 sequence at a time
+    if (shown.empty()) return;
+  }
+  text(shown == title ? title : shown + "\u2026", margin, margin, px, Rgb(0.1f, 0.1f, 0.1f), width,
+       height);
 }
 
 void GlPainter::legend(const Legend& legend, int width, int height) {
@@ -307,13 +319,34 @@ void GlPainter::legend(const Legend& legend, int width, int height) {
   const Ticks ticks = readable_ticks(legend.lo, legend.hi, legend.unit, 5);
   const float margin = 0.5f * text_size(height);
   const float x0 = 0.82f * w, x1 = x0 + std::max(6.0f, 0.022f * w);
-  // Labels as large as the pictures' text, smaller when the widest would not fit right of the bar.
+  // Labels as large as the pictures' text, smaller when the widest would not fit right of the
+  // bar; none at all where even 7 image pixels would not fit (an image a few dozen pixels wide).
   float px = text_size(height);
-  float widest = Font::standard().width(ticks.unit, px) - (x1 - x0) - 0.4f * px;
-  for (const auto& l : ticks.labels) widest = std::max(widest, Font::standard().width(l, px));
+  const Font& font = Font::standard();
+  float widest = font.width(ticks.unit, px) - (x1 - x0) - 0.4f * px;
+  for (const auto& l : ticks.labels) widest = std::max(widest, font.width(l, px));
   const float room = w - margin - (x1 + 0.4f * px);
   if (widest > room) px *= room / widest;
-  const float top = heading_band(height) + 2.2f * px, bottom = h - 1.5f * px - margin;
+  const bool labelled = px >= 7.0f * pixel_scale_;
+  if (!labelled) px = text_size(height);
+  const float top = heading_band(height) + (labelled ? 2.2f * px : 0.0f);
+  const float bottom = h - 1.5f * px - margin;
+  if (bottom - top < 4.0f) return;  // no room for a bar
+  colour_bar(legend, x0, x1, top, bottom, width, height);
+  if (!labelled) return;
+  const Rgb ink(0.1f, 0.1f, 0.1f);
+  // Five ticks, or the ends and the middle where five would overlap.
+  const int step = (bottom - top) / 4.0f >= 1.2f * px ? 1 : 2;
+  for (int i = 0; i <= 4; i += step) {
+    const float y = bottom - (bottom - top) * static_cast<float>(i) / 4.0f;
+    text(ticks.labels[static_cast<size_t>(i)], x1 + 0.4f * px, y - 0.6f * px, px, ink, width,
+         height);
+  }
+  text(ticks.unit, x0, top - 1.8f * px, px, ink, width, height);
+}
+
+void GlPainter::colour_bar(const Legend& legend, float x0, float x1, float top, float bottom,
+                           int width, int height) {
   std::vector<Vec3> corners;
   std::vector<Rgb> colors;
   constexpr int steps = 64;
@@ -327,13 +360,6 @@ void GlPainter::legend(const Legend& legend, int width, int height) {
     colors.insert(colors.end(), {ca, ca, cb, ca, cb, cb});
   }
   pixel_triangles(corners, colors, width, height);
-  const Rgb ink(0.1f, 0.1f, 0.1f);
-  for (int i = 0; i <= 4; ++i) {
-    const float y = bottom - (bottom - top) * static_cast<float>(i) / 4.0f;
-    text(ticks.labels[static_cast<size_t>(i)], x1 + 0.4f * px, y - 0.6f * px, px, ink, width,
-         height);
-  }
-  text(ticks.unit, x0, top - 1.8f * px, px, ink, width, height);
 }
 
 }  // namespace membra

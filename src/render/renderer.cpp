@@ -66,8 +66,11 @@ Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
   // down, which smooths the mesh's silhouette, the shadow and the text alike.
   GLint max_size = 4096;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  // At most 36 M framebuffer pixels (about 300 MB with depth and read-back): large pictures
+  // are sampled less, 8192 x 6144 not at all.
+  const double pixels = static_cast<double>(width) * height;
   r.ss = std::clamp(std::min(3, max_size / std::max(width, height)), 1, 3);
-  if (std::max(width, height) > 2048) r.ss = std::min(r.ss, 2);
+  while (r.ss > 1 && pixels * r.ss * r.ss > 36e6) --r.ss;
   const int fw = r.ss * width, fh = r.ss * height;
   glGenFramebuffers(1, &r.fbo);
   glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);

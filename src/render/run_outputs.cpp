@@ -9,11 +9,19 @@ StagedRun stage_run_outputs(const Scene& scene, const RunResult& r, const Pictur
                             OutputSet& out) {
   const nlohmann::json report = make_report(scene, r);
   out.add("report.json", [&](std::ostream& os) { os << report.dump(2) << '\n'; });
-  if (r.solve.diverged) return {true, ""};
+  if (r.solve.diverged) {
+    // A diverged state is no form: its page says so and shows the report's numbers only.
+    stage_report_page(page_from_staged(out, scene.name, scene.description, {},
+                                       "The run diverged: " + r.solve.message),
+                      out);
+    return {true, ""};
+  }
   stage_run_files(scene, r, opts, out);
   const std::string note = stage_run_pictures(scene, r, opts, out);
   stage_report_page(
-      page_from_staged(out, scene.name, scene.description, run_scales(run_colors(r, opts))), out);
+      page_from_staged(out, scene.name, scene.description, run_scales(run_colors(r, opts)),
+                       note.empty() ? "" : "No pictures could be rendered: " + note),
+      out);
   return {false, note};
 }
 

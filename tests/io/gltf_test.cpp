@@ -1,6 +1,7 @@
 // final.glb: written with tinygltf, read back with tinygltf.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -71,6 +72,45 @@ TEST(Gltf, RefusesMismatchedArraysAndUnreadableFiles) {
     EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos);
   }
   std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace membra
+
+namespace membra {
+namespace {
+
+// The file itself, read without tinygltf: glTF's y is up, so membra's height z is the second
+// coordinate of POSITION, and the accessor carries the min and max glTF requires.
+TEST(Gltf, TheFormStandsUprightInGltfAxes) {
+  const GridSheet g({0.02, 0.02, 3, 3});
+  GlbSheet s{Points(3, g.num_particles()), triangulate(g), {}, {}, {}, {}, {}};
+  for (int p = 0; p < g.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    s.x.col(p) = Vec3(g.position(i, j).x(), g.position(i, j).y(), p == 4 ? 0.005 : 0.0);
+  }
+  s.curvature_colors = s.stress_colors = std::vector<Rgb>(9, Rgb(0.5f, 0.5f, 0.5f));
+  s.curvature = s.stress = std::vector<double>(9, 0.0);
+  std::ostringstream out;
+  write_glb(out, s);
+  const std::string b = out.str();
+  const auto u32 = [&](size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, b.data() + at, 4);
+    return v;
+  };
+  const nlohmann::json doc = nlohmann::json::parse(b.substr(20, u32(12)));
+  const size_t bin = 20 + u32(12) + 8;
+  const auto& acc =
+      doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<int>()];
+  const auto& view = doc["bufferViews"][acc["bufferView"].get<int>()];
+  float centre[3];
+  std::memcpy(centre, b.data() + bin + view.value("byteOffset", 0) + 4 * 3 * 4, sizeof centre);
+  EXPECT_FLOAT_EQ(centre[1], 5.0f);    // the raised middle: up is y, in mm
+  EXPECT_FLOAT_EQ(centre[2], -10.0f);  // membra's y = 10 mm is glTF's z = -10 mm
+  EXPECT_FLOAT_EQ(acc["max"][1].get<float>(), 5.0f);
+  EXPECT_FLOAT_EQ(acc["min"][2].get<float>(), -20.0f);
+  EXPECT_EQ(doc["asset"]["extras"]["unit"], "mm");
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ TEST(Renderer, LabelsStayInsideTheImageAtAnySize) {
   const Legend legend{"Gaussian curvature of a rather long title that has to shrink to fit",
                       "1/mm^2", -1.88e-5, 1.88e-5};
   for (const auto& [w, h] : std::vector<std::pair<int, int>>{
-           {160, 120}, {320, 240}, {1200, 900}, {1600, 400}, {300, 900}}) {
+           {160, 120}, {320, 240}, {1200, 900}, {1600, 400}, {300, 900}, {64, 900}, {2048, 64}}) {
     Renderer renderer(w, h);
     const Image img = renderer.render(s.x, s.tris, s.colors, Camera{}, &legend, "Form");
     int touching = 0;
@@ -118,6 +118,19 @@ TEST(Renderer, LabelsStayInsideTheImageAtAnySize) {
     for (int y = 0; y < h; ++y)
       touching += (img.pixel(0, y).minCoeff() < 0.97f) + (img.pixel(w - 1, y).minCoeff() < 0.97f);
     EXPECT_EQ(touching, 0) << w << " x " << h;
+    // And the labels are there, not dropped (but where a picture is too narrow for them):
+    // dark ink right of the colour bar and in the heading.
+    int ink = 0, heading = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const bool dark = img.pixel(x, y).maxCoeff() < 0.6f;
+        ink += dark && x > 0.85 * w;
+        heading += dark && y < 0.08 * h + 10;
+      }
+    if (w >= 160) {
+      EXPECT_GT(ink, 10) << w << " x " << h;
+    }
+    EXPECT_GT(heading, 5) << w << " x " << h;
   }
 }
 

@@ -29,10 +29,11 @@ struct ReportPage {
   std::vector<std::uint8_t> glb;      // final.glb's bytes, or empty: no 3-D view
   std::vector<ColourScale> scales;    // COLOR_0, COLOR_1 of the glb
   std::vector<std::string> files;     // every file of the directory, linked
+  std::string note;  // shown at the top in red: why pictures are missing, a divergence
 };
 
 // Where the three.js files are read from: $MEMBRA_THREE_JS when set, else Debian's
-// /usr/share/javascript/three (MEMBRA_THREE_JS_DIR at build time).
+// /usr/share/javascript/three (the compiled-in MEMBRA_THREE_JS_DIR).
 std::filesystem::path three_js_dir();
 
 // The page's HTML; `with_view` false leaves the 3-D view out with a note saying why.
@@ -45,7 +46,8 @@ void stage_report_page(const ReportPage& page, OutputSet& out);
 // The page of an output set whose report.json, final.glb, pattern.svg and pictures are staged:
 // reads them back from the staged files.
 ReportPage page_from_staged(const OutputSet& out, const std::string& title,
-                            const std::string& description, std::vector<ColourScale> scales);
+                            const std::string& description, std::vector<ColourScale> scales,
+                            const std::string& note = {});
 
 std::string base64(const std::vector<std::uint8_t>& bytes);
 std::string html_escape(const std::string& text);

@@ -26,7 +26,7 @@ class Font {
   Font& operator=(const Font&) = delete;
 
   // The pictures' font: $MEMBRA_FONT when set, else DejaVu Sans where Debian installs it
-  // (MEMBRA_FONT_FILE at build time). Loaded once; throws RenderError when missing.
+  // (the compiled-in MEMBRA_FONT_FILE). Loaded once; throws RenderError when missing.
   static const Font& standard();
 
   // Width in pixels of a UTF-8 line set `pixel_height` pixels high (ascent to descent).

@@ -64,6 +64,10 @@ class GlPainter {
   void set_pixel_scale(float scale) { pixel_scale_ = scale; }
 
  private:
+  // The bar's 64 colour steps from lo (bottom) to hi (top), in pixels.
+  void colour_bar(const Legend& legend, float x0, float x1, float top, float bottom, int width,
+                  int height);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   float pixel_scale_ = 1.0f;
