@@ -95,9 +95,12 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
     if (!v.is_number_integer())
       throw InputError(ptr, "expected an integer number of particles, got " + v.dump());
     const long n = v.get<long>();
-    if (n < 2 || n > kMaxNodesPerSide)
-      throw InputError(ptr, "must be in [2, " + std::to_string(kMaxNodesPerSide) + "], got " +
-                                std::to_string(n));
+    // Three at least: plate bending needs three particles in a row; a 2 x 2 sheet has no
+    // bending and floppy modes that leave its released form undetermined.
+    if (n < 3 || n > kMaxNodesPerSide)
+      throw InputError(ptr, "must be in [3, " + std::to_string(kMaxNodesPerSide) + "], got " +
+                                std::to_string(n) +
+                                (n == 2 ? " (plate bending needs three particles in a row)" : ""));
     (k == 0 ? scene.grid.nx : scene.grid.ny) = static_cast<int>(n);
   }
   // The homogenization (docs/model.md, "Homogenization") is for square cells.

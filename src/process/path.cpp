@@ -123,6 +123,10 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
         next == units ? scene.simulation.tolerance : scene.simulation.path_tolerance;
     const SolveReport r =
         solve_scene_step(scene, p, s, increment_stage(name, t, n), progress, nullptr, tolerance);
+    if (r.out_of_time) {  // the run's budget is spent: stop here, not halve or go on
+      accumulate(total, r);
+      break;
+    }
     if (newton && !r.converged && !r.diverged && step > 1) {
       add_work(total, r);  // its work counts; its end state does not
       ++total.increments_halved;

@@ -334,6 +334,14 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   Points x = gauged ? Points(gauge.rotation * state.x) : state.x;
   std::vector<int> dof;
   const int ndof = number_dofs(m, gauged ? &gauge.held : nullptr, o.in_plane, dof);
+  if (ndof == 0) {
+    // Every particle pinned (or held by the gauge): nothing moves, so nothing is unbalanced
+    // that the solver could change; the residual is that of the pins' reactions.
+    r.converged = true;
+    r.message = "newton: nothing to solve: every particle is pinned";
+    r.wall_seconds = clock.seconds();
+    return r;
+  }
   Newton newton(m, x, dof, ndof, o, r);
   newton.run(clock);
   state.x = gauged ? Points(gauge.rotation.transpose() * x) : x;

@@ -153,7 +153,7 @@ TEST_F(Cli, BadInputFailsCleanlyAndWritesNothing) {
       {write("malformed.json", "{\"sheet\": [1, 2,}").string(), "malformed.json: malformed JSON"},
       {write("negative.json", negative.dump()).string(),
        "negative.json: /simulation/K: must be > 0"},
-      {write("zero.json", zero.dump()).string(), "zero.json: /sheet/resolution/0: must be in [2"},
+      {write("zero.json", zero.dump()).string(), "zero.json: /sheet/resolution/0: must be in [3"},
       {(dir / "missing.json").string(), "missing.json: cannot open"},
   };
   for (const auto& c : cases) {
