@@ -20,11 +20,15 @@ folders are the same whatever the cluster.
 import hashlib
 import itertools
 import json
+import math
 from pathlib import Path
 
 from ._membra import SceneError
 
 KNOWN_KEYS = {"name", "description", "scene", "design", "set", "grid", "list", "scenes"}
+
+
+MAX_JOBS = 100_000
 
 
 def _error(where, detail):
@@ -50,6 +54,8 @@ def load_sweep(source, base_dir=None):
             raise _error(where, f"cannot read the sweep file: {e.strerror}") from None
         except json.JSONDecodeError as e:
             raise _error(where, f"malformed JSON at line {e.lineno}, column {e.colno}: {e.msg}") from None
+        except UnicodeDecodeError as e:
+            raise _error(where, f"not UTF-8 text (byte {e.start}): save it as UTF-8") from None
         base = Path(source).resolve().parent
     _check(spec, where)
     for key in ("scene", "design"):
@@ -81,6 +87,17 @@ def _check(spec, where):
     for i, entry in enumerate(spec.get("list", [])):
         if not isinstance(entry, dict):
             raise _error(f"{where}: /list/{i}", "must be an object of path: value")
+    for key in ("scene", "design", "name", "description"):
+        if key in spec and not (isinstance(spec[key], str) and spec[key]):
+            raise _error(f"{where}: /{key}", "must be a non-empty string")
+    for i, file in enumerate(spec.get("scenes", [])):
+        if not (isinstance(file, str) and file):
+            raise _error(f"{where}: /scenes/{i}", "must be a scene file's path")
+    # Counted before anything is expanded: a grid of a few long axes multiplies fast.
+    jobs = max(1, len(spec.get("list", []))) * math.prod(len(v) for v in spec.get("grid", {}).values())
+    if jobs > MAX_JOBS:
+        raise _error(f"{where}: /grid", f"the sweep has {jobs} scenes; at most {MAX_JOBS} are run in "
+                     "one sweep (split it, or sample the grid with a list)")
 
 
 def expand(spec):
@@ -98,10 +115,13 @@ def expand(spec):
         variants = [({**row, **combo}, file, {**row, **combo}) for row in rows for combo in combos]
     kind = "design" if "design" in spec else "run"
     jobs = []
+    digests = {}  # each file hashed once, however many jobs share it
     for i, (params, file, varied) in enumerate(variants):
         sets = [f"{k}={json.dumps(v)}" for k, v in {**fixed, **varied}.items()]
+        if file not in digests:
+            digests[file] = _digest(file)
         jobs.append({"id": f"{i:04d}", "kind": kind, "file": file, "params": params, "sets": sets,
-                     "file_sha256": _digest(file)})
+                     "file_sha256": digests[file]})
     return jobs
 
 

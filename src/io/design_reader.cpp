@@ -1,6 +1,7 @@
 #include "membra/io/design_reader.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -52,8 +53,10 @@ void parse_target(const json& j, const std::string& ptr, const std::filesystem::
   } else {
     const JsonObject o(body, p, {"file"});
     t.obj_file = (base_dir / o.string("file", std::nullopt)).string();
+    // A regular file only: a device or a pipe (/dev/zero) would be read without end.
     std::ifstream in(t.obj_file);
-    if (!in) throw InputError(o.pointer("file"), t.obj_file + ": cannot open the OBJ file");
+    if (!std::filesystem::is_regular_file(t.obj_file) || !in)
+      throw InputError(o.pointer("file"), t.obj_file + ": cannot open the OBJ file (not a file)");
     const ObjMesh mesh = read_obj(in, t.obj_file);
     t.obj_x = mesh.x;
     t.obj_triangles = mesh.triangles;

@@ -1,5 +1,6 @@
 #include "membra/io/image.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -43,7 +44,8 @@ GreyImage decode_grey_image(const unsigned char* bytes, size_t size, const std::
 
 GreyImage load_grey_image(const std::filesystem::path& file, const std::string& where) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(where, "cannot read image " + file.string() + ": cannot open file");
+  if (!std::filesystem::is_regular_file(file) || !in)  // not a device or pipe read without end
+    throw InputError(where, "cannot read image " + file.string() + ": cannot open file");
   const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
                                 std::istreambuf_iterator<char>());
   return decode_grey_image(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(),

@@ -125,6 +125,7 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
         solve_scene_step(scene, p, s, increment_stage(name, t, n), progress, nullptr, tolerance);
     if (r.out_of_time) {  // the run's budget is spent: stop here, not halve or go on
       accumulate(total, r);
+      recorder.record(p.membrane.sheet.model, s.x, thickness);  // the state it stopped in
       break;
     }
     if (newton && !r.converged && !r.diverged && step > 1) {

@@ -32,7 +32,9 @@ SceneRun::SceneRun(const Scene& scene, ProgressFn progress)
 bool SceneRun::record(StepReport step) {
   accumulate(r_.solve, step.solve);
   r_.steps.push_back(std::move(step));
-  return !r_.solve.diverged;
+  // A spent wall-time budget ends the run as a divergence does: later steps would act on a
+  // sheet their step before never brought where it was going.
+  return !r_.solve.diverged && !r_.solve.out_of_time;
 }
 
 // The wall-time budget counts from the first step or solve (a notebook's pauses before it do

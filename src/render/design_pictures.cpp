@@ -33,7 +33,7 @@ std::string stage_design_pictures(const DesignResult& d, OutputSet& out) {
     const double hi = std::max(1e-3, d.error.max / units::mm);
     std::vector<Rgb> colors(static_cast<size_t>(nt), Rgb(0.8f, 0.8f, 0.8f));
     for (double v : d.error.form_distance) colors.push_back(colormap(v / units::mm, 0.0, hi));
-    const Legend legend{"target | form: distance", "mm", 0.0, hi};
+    const Legend legend{"Target (grey) | form: distance to the target", "mm", 0.0, hi};
     Renderer renderer(1400, 700);
     const auto png = encode_png(renderer.render(both, tris, colors, cam, &legend));
     out.add("comparison.png", [png](std::ostream& os) {

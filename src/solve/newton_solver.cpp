@@ -335,8 +335,9 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   std::vector<int> dof;
   const int ndof = number_dofs(m, gauged ? &gauge.held : nullptr, o.in_plane, dof);
   if (ndof == 0) {
-    // Every particle pinned (or held by the gauge): nothing moves, so nothing is unbalanced
-    // that the solver could change; the residual is that of the pins' reactions.
+    // Every particle pinned (or held by the gauge): nothing can move, so there is nothing to
+    // solve (the residual counts free particles only, and there are none).
+    state.v.setZero(3, n);
     r.converged = true;
     r.message = "newton: nothing to solve: every particle is pinned";
     r.wall_seconds = clock.seconds();

@@ -42,12 +42,12 @@ std::vector<Vec2> star(int n, unsigned seed) {
 }
 
 TEST(PolygonIndex, EqualsTheLoopOverEveryEdge) {
-  for (int n : {3, 10, 200, 5000}) {
+  for (int n : {3, 10, 200, 2000}) {
     const std::vector<Vec2> v = star(n, static_cast<unsigned>(n));
     const PolygonIndex index(v);
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> x(0.0, 0.2), y(0.0, 0.14);
-    for (int k = 0; k < 2000; ++k) {
+    for (int k = 0; k < 500; ++k) {
       const Vec2 p(x(rng), y(rng));
       ASSERT_EQ(index.contains(p), brute_contains(v, p)) << n << ": " << p.transpose();
       ASSERT_NEAR(index.distance(p), brute_distance(v, p), 1e-15) << n << ": " << p.transpose();
@@ -68,15 +68,39 @@ TEST(PolygonIndex, AHundredThousandVertexCircle) {
   const PolygonIndex index(v);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> x(-0.05, 0.05), y(-0.03, 0.03);
-  for (int k = 0; k < 300; ++k) {
+  for (int k = 0; k < 60; ++k) {
     const Vec2 p(x(rng), y(rng));
     EXPECT_EQ(index.contains(p), brute_contains(v, p));
     EXPECT_NEAR(index.distance(p), brute_distance(v, p), 1e-15);
     // The bounded search of the pattern's field: exact near the outline, never below the truth.
     const double bounded = index.distance(p, 3), exact = brute_distance(v, p);
     EXPECT_GE(bounded, exact - 1e-15);
-    if (exact < 1e-3) {
-      EXPECT_NEAR(bounded, exact, 1e-15);  // 3 cells are 0.8 mm here
+    if (exact < 0.7e-3) {
+      EXPECT_NEAR(bounded, exact, 1e-15);  // within 3 cells (0.76 mm here) it is exact
+    }
+  }
+}
+
+// Degenerate but accepted outlines: all points on a line, all the same point, and a star whose
+// every edge crosses the whole shape (each edge occupies a line of cells, not its box).
+TEST(PolygonIndex, DegenerateAndCrossingOutlines) {
+  const std::vector<std::vector<Vec2>> shapes = {
+      {{0.0, 0.0}, {0.01, 0.0}, {0.02, 0.0}, {0.03, 0.0}},
+      {{0.05, 0.05}, {0.05, 0.05}, {0.05, 0.05}},
+      {}};
+  std::vector<std::vector<Vec2>> all = shapes;
+  auto& star = all.back();
+  const int n = 20001;  // a {n/2}-pointed star polygon: edges from one side to the other
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * M_PI * ((k * (n / 2)) % n) / n;
+    star.emplace_back(0.05 * std::cos(a), 0.05 * std::sin(a));
+  }
+  for (const auto& v : all) {
+    const PolygonIndex index(v);
+    for (const Vec2& p :
+         {Vec2(0.0, 0.0), Vec2(0.015, 1e-9), Vec2(1e6, -1e6), Vec2(0.05, 0.05), Vec2(0.01, 0.02)}) {
+      EXPECT_EQ(index.contains(p), brute_contains(v, p)) << v.size() << ": " << p.transpose();
+      EXPECT_NEAR(index.distance(p), brute_distance(v, p), 1e-12 * (1.0 + p.norm()));
     }
   }
 }

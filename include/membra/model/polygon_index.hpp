@@ -32,10 +32,15 @@ class PolygonIndex {
 
   std::vector<Vec2> v_;  // edge e runs from v_[e - 1] (cyclic) to v_[e]
   Box2 box_;
-  Vec2 cell_ = Vec2::Ones();
-  int n_ = 1;                            // cells per side
+  // Records edge e in the cells it passes through: for each row it spans, the columns of the
+  // part of the edge inside that row's band (an edge across the whole polygon occupies a line
+  // of cells, not its bounding box).
+  void add_edge(int e, const Vec2& a, const Vec2& b);
+
+  double cell_ = 1.0;                    // square cells, sized by the box's longer side
+  int nx_ = 1, ny_ = 1;                  // cells along x and y
   std::vector<std::vector<int>> rows_;   // edges whose y-range meets each row
-  std::vector<std::vector<int>> cells_;  // edges whose box meets each cell, row-major
+  std::vector<std::vector<int>> cells_;  // edges passing through each cell, row-major
   std::vector<int> empty_rings_;         // per cell: rings around it (Chebyshev) without any edge
 };
 
