@@ -1,6 +1,7 @@
 #include "membra/model/pattern.hpp"
 
 #include "membra/model/polygon_index.hpp"
+#include "membra/model/segment_distance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,13 +11,6 @@
 
 namespace membra {
 namespace {
-
-double segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).squaredNorm();
-}
 
 class Strip final : public Pattern {
  public:

@@ -1,4 +1,5 @@
 #include "membra/model/polygon_index.hpp"
+#include "membra/model/segment_distance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +9,6 @@
 
 namespace membra {
 namespace {
-
-double segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).squaredNorm();
-}
 
 // For every cell of an n x m grid (n along x), the Chebyshev distance (in cells) to the nearest
 // cell that holds an edge: a breadth-first search from those cells over the eight neighbours.
