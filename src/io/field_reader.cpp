@@ -9,7 +9,7 @@
 namespace membra {
 namespace {
 
-const std::vector<std::string_view> kImageKeys = {"image", "range", "origin", "size"};
+const std::vector<std::string_view> kFieldImageKeys = {"image", "range", "origin", "size"};
 const std::vector<std::string_view> kPresetKeys = {"preset", "amplitude"};
 
 void read_image_field(const JsonObject& o, const std::filesystem::path& base_dir, FieldSpec& s) {
@@ -45,7 +45,7 @@ FieldSpec read_field_spec(const nlohmann::json& j, const std::string& pointer,
     s.preset = o.string("preset", std::nullopt, {"sin2_x", "sin2_y", "radial"});
     s.amplitude = o.number("amplitude", 0.3, Bounds::between(-0.99, 10.0));
   } else if (j.is_object() && j.contains("image")) {
-    read_image_field(JsonObject(j, pointer, kImageKeys), base_dir, s);
+    read_image_field(JsonObject(j, pointer, kFieldImageKeys), base_dir, s);
   } else {
     throw InputError(pointer,
                      "expected a number, a formula string such as \"1 + 0.3*sin(pi*x/200)^2\", "

@@ -19,7 +19,8 @@ const std::vector<std::string_view> kEllipseKeys = {"center", "radii", "angle", 
 const std::vector<std::string_view> kHyperbolaKeys = {"center", "a",     "b",
                                                       "angle",  "width", "opens"};
 const std::vector<std::string_view> kPolygonKeys = {"points"};
-const std::vector<std::string_view> kImageKeys = {"file", "origin", "size", "threshold", "invert"};
+const std::vector<std::string_view> kPatternImageKeys = {"file", "origin", "size", "threshold",
+                                                         "invert"};
 
 std::vector<Vec2> read_points(const JsonObject& o, std::string_view key, size_t min_count) {
   const auto& arr = o.at(key);
@@ -107,7 +108,7 @@ PatternSpec read_pattern_spec(const json& j, const std::string& pointer,
     s.kind = PatternSpec::Kind::polygon;
     s.points = read_points(o, "points", 3);
   } else {
-    read_image(JsonObject(body, ptr, kImageKeys), base_dir, s);
+    read_image(JsonObject(body, ptr, kPatternImageKeys), base_dir, s);
   }
   return s;
 }
@@ -119,7 +120,7 @@ std::map<std::string, std::vector<std::string>> pattern_known_keys() {
           {"circle", to_strings(kCircleKeys)},
           {"hyperbola", to_strings(kHyperbolaKeys)},
           {"polygon", to_strings(kPolygonKeys)},
-          {"image", to_strings(kImageKeys)}};
+          {"image", to_strings(kPatternImageKeys)}};
 }
 
 }  // namespace membra

@@ -11,10 +11,10 @@
 namespace membra {
 namespace {
 
-const std::string kExamples = std::string(MEMBRA_SOURCE_DIR) + "/examples/";
+const std::string kExampleDir = std::string(MEMBRA_SOURCE_DIR) + "/examples/";
 
 RunResult run_example(const std::string& name, std::vector<std::string> sets) {
-  return run_scene(load_scene(kExamples + name, sets));
+  return run_scene(load_scene(kExampleDir + name, sets));
 }
 
 TEST(Examples, ParallelStripsCurveTheWholeSheetPerpendicularStripsDoNot) {

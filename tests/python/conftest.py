@@ -29,3 +29,10 @@ def small_ellipse():
 
     return membra.Scene(ROOT / "examples" / "synclastic_ellipse.json",
                         set={"sheet.resolution": [13, 13], "simulation.solver": "newton"})
+
+
+@pytest.fixture(scope="session")
+def cli_env():
+    """The environment for a CLI run whose bytes are compared with this process's: the same
+    BLAS settings (OPENBLAS_CORETYPE selects kernels that round differently), one OpenMP thread."""
+    return dict(os.environ, OMP_NUM_THREADS="1")

@@ -13,12 +13,12 @@ def tiny_design(root):
     return spec
 
 
-def test_design_matches_the_cli(root, cli, tmp_path):
+def test_design_matches_the_cli(root, cli, cli_env, tmp_path):
     spec = tiny_design(root)
     file = tmp_path / "cap.json"
     file.write_text(json.dumps(spec))
     subprocess.run([cli, "design", "target", str(file), "--quiet", "--out", str(tmp_path / "cli")],
-                   check=True, env={"OMP_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"})
+                   check=True, env=cli_env)
     seen = []
     d = membra.design(file, out=tmp_path / "py", progress=seen.append)
     assert len(seen) == len(d.report["design"]["iterations"]) <= 3

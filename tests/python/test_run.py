@@ -22,12 +22,12 @@ def without_timings(value):
     return value
 
 
-def test_run_writes_what_the_cli_writes(root, cli, tmp_path):
+def test_run_writes_what_the_cli_writes(root, cli, cli_env, tmp_path):
     scene = root / "examples" / "synclastic_ellipse.json"
     sets = ["sheet.resolution=[13,13]", "simulation.solver=newton"]
     args = [cli, "run", str(scene), "--quiet", "--out", str(tmp_path / "cli")]
     subprocess.run(args + [a for s in sets for a in ("--set", s)], check=True,
-                   env={"OMP_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"})
+                   env=cli_env)
     result = membra.run(membra.Scene(scene, set=sets), out=tmp_path / "py")
     cli_files = sorted(p.name for p in (tmp_path / "cli").iterdir())
     assert sorted(p.name for p in (tmp_path / "py").iterdir()) == cli_files
