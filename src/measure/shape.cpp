@@ -26,12 +26,35 @@ double height_over_best_plane(const Points& x, Vec3* normal) {
 namespace {
 
 // Each particle's neighbourhood: the particles within `radius` of it on the paper (found
-// through a bucket grid of cell `radius`). Its mean position is the global form there; the
+// through a bucket grid of cell `radius`). Its linear fit at the particle is the global form
+// there (`mean`: the neighbourhood's mean away from the edges); the
 // distance of the particle from the neighbourhood's least-squares plane is its fold.
 struct Neighbourhoods {
   Points mean;
   Eigen::VectorXd fold;
 };
+
+// The value at p of the least-squares linear fit of the positions over the neighbourhood's paper
+// coordinates. For a symmetric neighbourhood that is its mean; at the sheet's edge, where the
+// neighbourhood is one-sided and its mean lies inside the sheet, the fit is not pulled inwards
+// (the mean was: on coarse grids the global form's rim then folded and its total curvature came
+// out several times the sheet's own).
+Vec3 linear_fit_at(const Points& x, const Points& paper, Eigen::Index p,
+                   const std::vector<Eigen::Index>& near, const Vec3& mean) {
+  Vec2 centre = Vec2::Zero();
+  for (Eigen::Index q : near) centre += paper.col(q).head<2>();
+  centre /= static_cast<double>(near.size());
+  Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+  Eigen::Matrix<double, 3, 2> b = Eigen::Matrix<double, 3, 2>::Zero();
+  for (Eigen::Index q : near) {
+    const Vec2 u = paper.col(q).head<2>() - centre;
+    a += u * u.transpose();
+    b += (x.col(q) - mean) * u.transpose();
+  }
+  // Collinear or single points: no slope across the line, the mean is the best there is.
+  if (!(a.determinant() > 1e-9 * a.trace() * a.trace())) return mean;
+  return mean + b * a.inverse() * (paper.col(p).head<2>() - centre);
+}
 
 Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double radius,
                                     double size) {
@@ -73,7 +96,7 @@ Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double
     Vec3 mean = Vec3::Zero();
     for (Eigen::Index q : near) mean += x.col(q);
     mean /= static_cast<double>(near.size());
-    out.mean.col(p) = mean;
+    out.mean.col(p) = linear_fit_at(x, paper, p, near, mean);
     if (near.size() < 3) continue;
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
     for (Eigen::Index q : near) cov += (x.col(q) - mean) * (x.col(q) - mean).transpose();
@@ -85,11 +108,14 @@ Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double
 
 }  // namespace
 
-// The window radius of the global/fold split: 1/16 of the paper's larger side (0: none).
+// The window radius of the global/fold split: 1/16 of the paper's larger side, and at least 1.75
+// grid spacings (estimated from the particles' density), so that every window holds a particle's
+// eight neighbours and nothing depends on how a spacing equal to the radius rounds (0: none).
 double window_radius(const Points& x, const Points& paper) {
   if (x.cols() == 0 || paper.cols() != x.cols()) return 0.0;
   const Vec3 extent = paper.rowwise().maxCoeff() - paper.rowwise().minCoeff();
-  return std::max(extent.x(), extent.y()) / 16.0;
+  const double spacing = std::sqrt(extent.x() * extent.y() / static_cast<double>(x.cols()));
+  return std::max(std::max(extent.x(), extent.y()) / 16.0, 1.75 * spacing);
 }
 
 Points global_form(const Points& x, const Points& paper) {

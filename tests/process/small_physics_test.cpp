@@ -4,7 +4,7 @@
 // What is checked is that the code runs cleanly (no sanitizer report) to a finite end state,
 // the same twice; the numbers are
 // checked at full size by the tests the sanitized run leaves out (Examples, Kirsch, Determinism,
-// HangingChain, CompressedStrip), whose own set-ups do not run sanitized.
+// HangingChain, CompressedStrip); their set-ups run sanitized, scaled down, in small_setups_test.
 #include <gtest/gtest.h>
 
 #include <cctype>

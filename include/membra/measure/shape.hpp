@@ -24,10 +24,11 @@ struct ShapeSummary {
 // positions in the flat sheet), defines the neighbourhoods of the global/fold split.
 ShapeSummary summarize_shape(const Points& x, const Points& paper = Points());
 
-// The global form: each particle moved to the mean position of its paper neighbourhood (the
-// window of summarize_shape's split, 1/8 of the sheet across), so that folds and wrinkles finer
-// than the window average out and the form a designer sees remains. Empty when `paper` does not
-// match x.
+// The global form: each particle moved to the linear least-squares fit of the positions over its
+// paper neighbourhood (the window of summarize_shape's split, 1/8 of the sheet across), evaluated
+// at the particle: the neighbourhood's mean inside the sheet, unbiased at its edges. Folds and
+// wrinkles finer than the window average out and the form a designer sees remains. Empty when
+// `paper` does not match x.
 Points global_form(const Points& x, const Points& paper);
 
 // Extent of x along the normal of its least-squares plane (that normal is returned in `normal`).
