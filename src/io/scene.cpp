@@ -40,7 +40,8 @@ const std::vector<std::string_view> kSimulationKeys = {"solver",
                                                        "stop_when_converged",
                                                        "path_tolerance",
                                                        "explore",
-                                                       "max_seconds"};
+                                                       "max_seconds",
+                                                       "ramp_seconds"};
 
 // Largest grid we accept; the robustness issue adds a memory-based limit.
 constexpr long kMaxNodesPerSide = 4096;
@@ -154,6 +155,18 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
   sim.explore = static_cast<int>(s.integer("explore", sim.explore, 1, 1000));
   sim.max_seconds = s.number("max_seconds", sim.max_seconds, Bounds::between(0.0, 1e7));
+  sim.ramp_seconds = s.number("ramp_seconds", sim.ramp_seconds, Bounds::between(0.0, 1e6));
+  if (sim.ramp_seconds > 0.0 && sim.is_static())
+    throw InputError(s.pointer("ramp_seconds"),
+                     "a ramp in simulated time needs a time-stepping solver (rk4 or "
+                     "symplectic_euler); the equilibrium solvers follow a path by `increments`");
+  if (sim.ramp_seconds > static_cast<double>(sim.steps) * sim.dt) {
+    std::ostringstream msg;
+    msg << "the ramp (" << sim.ramp_seconds
+        << " s) is longer than the run (steps x T = " << static_cast<double>(sim.steps) * sim.dt
+        << " s): raise `steps` or shorten the ramp";
+    throw InputError(s.pointer("ramp_seconds"), msg.str());
+  }
   if (sim.explore > 1 && !sim.is_static())
     throw InputError(s.pointer("explore"),
                      "exploring the stable forms needs an equilibrium solver (static or newton), "

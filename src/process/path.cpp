@@ -15,9 +15,25 @@ void FrameRecorder::record(const Model& m, const Points& x, double thickness) {
   frames->push_back({x, vertex_stress(m, spring_stress(m, x, thickness))});
 }
 
+namespace {
+
+// Applies `path` linearly over `seconds` of simulated time from now: set(t) at every check (a
+// check every 50 steps: hundreds of small increments), the run kept going until the ramp is done.
+void ramp_path(const Path& path, double seconds, const State& s, SolverSettings& o) {
+  const double start = s.time;
+  path.set(std::min(1.0, o.dt / seconds));
+  o.settle_after = start + seconds;
+  o.on_check = [&path, start, seconds, frames = std::move(o.on_check)](const State& st, long step) {
+    path.set(std::min(1.0, (st.time - start) / seconds));
+    if (frames) frames(st, step);
+  };
+}
+
+}  // namespace
+
 SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& s,
                              const std::string& stage, const ProgressFn& progress,
-                             FrameRecorder* recorder, double tolerance) {
+                             FrameRecorder* recorder, double tolerance, const Path* ramp) {
   const SimulationSpec& sim = scene.simulation;
   const Model& m = p.membrane.sheet.model;
   SolverSettings o;
@@ -52,6 +68,7 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
       next += every * ((step - next) / every + 1);
     };
   }
+  if (ramp && !sim.is_static() && sim.ramp_seconds > 0.0) ramp_path(*ramp, sim.ramp_seconds, s, o);
   SolveReport r = solve_with(sim.solver, m, s, o);
   r.out_of_time =
       p.deadline && !r.converged && !r.diverged && std::chrono::steady_clock::now() >= *p.deadline;
@@ -157,7 +174,11 @@ StepReport follow_path(const Scene& scene, const PreparedScene& p, State& s,
     return rep;
   }
   if (!scene.simulation.is_static()) {
-    // Time stepping lets go at once, as the paper's tool does.
+    // Time stepping lets go at once, as the paper's tool does, or over simulation.ramp_seconds.
+    if (scene.simulation.ramp_seconds > 0.0) {
+      rep.solve = solve_scene_step(scene, p, s, name, progress, &recorder, -1.0, &path);
+      return rep;
+    }
     path.set(1.0);
     rep.solve = solve_scene_step(scene, p, s, name, progress, &recorder);
     return rep;

@@ -46,7 +46,8 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
     small_in_a_row = r.residual_relative <= o.tolerance ? small_in_a_row + 1 : 0;
     if (o.on_check) o.on_check(state, step);
     if (o.progress) o.progress({"", step, o.steps, r.residual_relative, seconds()});
-    if (o.stop_when_converged && small_in_a_row >= o.confirm_checks) break;
+    if (o.stop_when_converged && small_in_a_row >= o.confirm_checks && state.time >= o.settle_after)
+      break;
     if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
   }
   if (r.iterations == 0) {

@@ -83,6 +83,7 @@ SolveReport solve_with(Solver solver, const Model& model, State& state, const So
       o.max_seconds = in.max_seconds;
       o.progress = in.progress;
       o.on_check = in.on_check;
+      o.settle_after = in.settle_after;
       return run_dynamics(model, state, o);
     }
   }

@@ -66,6 +66,24 @@ TEST(Scene, PathToleranceDefaultsToTheToleranceAndIsNeverTighter) {
   EXPECT_EQ(error_at(j), "/simulation/path_tolerance");
 }
 
+// simulation.ramp_seconds: for time stepping only, and within the run's simulated time.
+TEST(Scene, ARampNeedsTimeSteppingAndMustFitInTheRun) {
+  json j = minimal();
+  j["simulation"]["solver"] = "rk4";
+  j["simulation"]["T"] = 1e-4;
+  j["simulation"]["steps"] = 20000;                               // 2 s
+  EXPECT_DOUBLE_EQ(parse_scene(j).simulation.ramp_seconds, 0.0);  // at once by default
+  j["simulation"]["ramp_seconds"] = 1.5;
+  EXPECT_DOUBLE_EQ(parse_scene(j).simulation.ramp_seconds, 1.5);
+  j["simulation"]["ramp_seconds"] = 2.5;  // longer than 2 s of run
+  EXPECT_EQ(error_at(j), "/simulation/ramp_seconds");
+  j["simulation"]["ramp_seconds"] = -1.0;
+  EXPECT_EQ(error_at(j), "/simulation/ramp_seconds");
+  j["simulation"]["ramp_seconds"] = 1.0;
+  j["simulation"]["solver"] = "static";  // equilibrium solvers follow increments instead
+  EXPECT_EQ(error_at(j), "/simulation/ramp_seconds");
+}
+
 TEST(Scene, MaterialPresetsCanBePartlyOverridden) {
   json j = minimal();
   j["materials"] = {{"latex", {{"thickness", 1.0}}}};

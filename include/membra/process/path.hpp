@@ -34,14 +34,18 @@ struct FrameRecorder {
 };
 
 // Solves for equilibrium (or steps in time) with the scene's solver. `tolerance` < 0: the
-// scene's. Frames are recorded during time stepping when `recorder` is given.
+// scene's. Frames are recorded during time stepping when `recorder` is given. `ramp` (time
+// stepping with simulation.ramp_seconds > 0): the path whose change is applied over that time,
+// set at every check, the run not ending at rest before the ramp does.
 SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& s,
                              const std::string& stage, const ProgressFn& progress,
-                             FrameRecorder* recorder = nullptr, double tolerance = -1.0);
+                             FrameRecorder* recorder = nullptr, double tolerance = -1.0,
+                             const Path* ramp = nullptr);
 
 // Follows `path` to its end: with an equilibrium solver, set(k / n) and a solve for k = 1..n
 // (a frame recorded after each); with time stepping, set(1) and one run of dynamics (frames along
-// it). The returned report is named `name`; its solve sums the path's solves.
+// it), or set(t) ramped over simulation.ramp_seconds during that run. The returned report is named
+// `name`; its solve sums the path's solves.
 StepReport follow_path(const Scene& scene, const PreparedScene& p, State& s,
                        const std::string& name, const Path& path, const ProgressFn& progress,
                        FrameRecorder& recorder);

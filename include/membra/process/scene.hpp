@@ -32,6 +32,11 @@ struct SimulationSpec {
   // (docs/performance.md, "Looser paths").
   double path_tolerance = 1e-6;
   bool stop_when_converged = true;
+  // Time stepping: the simulated seconds over which each gradual step (release, grow, ...) is
+  // applied, linearly, while the sheet moves; 0: at once, as the paper's tool lets go. A slow
+  // ramp is the physical, slow process an equilibrium solver's increments stand for
+  // (docs/forms.md). Must fit in the run: ramp_seconds <= steps x T.
+  double ramp_seconds = 0.0;
   // Releases of the scene, each with another seeded imperfection, to find every stable form it
   // can take (explore.hpp); 1: the scene's own release only.
   int explore = 1;

@@ -18,7 +18,8 @@ struct DynamicsOptions {
   double tolerance = 1e-6;
   double force_scale = 1.0;  // N, normally k_stretch x grid spacing
   bool stop_when_converged = true;
-  int check_every = 50;  // steps between residual and divergence checks
+  double settle_after = 0.0;  // s of simulated time: at rest before it is not the end (a ramp)
+  int check_every = 50;       // steps between residual and divergence checks
   int confirm_checks = 3;
   double max_seconds = 0.0;                               // wall-time budget (0: none)
   std::function<void(const Progress&)> progress;          // called at every check

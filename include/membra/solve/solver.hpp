@@ -49,6 +49,7 @@ struct SolverSettings {
   double dt = 1e-4;                 // time stepping: T, s
   long steps = 10000;               // time stepping: steps at most
   bool stop_when_converged = true;  // time stepping
+  double settle_after = 0.0;        // time stepping: no stop at rest before this time, s
   double max_seconds = 0.0;         // wall-time budget (0: none)
   std::function<void(const Progress&)> progress;
   std::function<void(const State&, long step)> on_check;  // time stepping: e.g. frames
