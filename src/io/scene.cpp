@@ -160,7 +160,7 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
     throw InputError(s.pointer("ramp_seconds"),
                      "a ramp in simulated time needs a time-stepping solver (rk4 or "
                      "symplectic_euler); the equilibrium solvers follow a path by `increments`");
-  if (sim.ramp_seconds > static_cast<double>(sim.steps) * sim.dt) {
+  if (sim.ramp_seconds > static_cast<double>(sim.steps) * sim.dt * (1.0 + 1e-9)) {  // round-off
     std::ostringstream msg;
     msg << "the ramp (" << sim.ramp_seconds
         << " s) is longer than the run (steps x T = " << static_cast<double>(sim.steps) * sim.dt

@@ -106,15 +106,31 @@ Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double
   return out;
 }
 
+// The grid spacing along one paper axis: the median gap between distinct coordinates (a sheet is
+// a grid on the paper; holes and masks remove particles, not columns, and the median ignores a
+// stray gap). Coordinates closer than 1e-9 of the extent are one column.
+double axis_spacing(const Eigen::RowVectorXd& coordinate) {
+  std::vector<double> c(coordinate.data(), coordinate.data() + coordinate.size());
+  std::sort(c.begin(), c.end());
+  const double same = 1e-9 * std::max(c.back() - c.front(), 1e-300);
+  std::vector<double> gaps;
+  for (size_t i = 1; i < c.size(); ++i)
+    if (c[i] - c[i - 1] > same) gaps.push_back(c[i] - c[i - 1]);
+  if (gaps.empty()) return 0.0;
+  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
+  return gaps[gaps.size() / 2];
+}
+
 }  // namespace
 
 // The window radius of the global/fold split: 1/16 of the paper's larger side, and at least 1.75
-// grid spacings (estimated from the particles' density), so that every window holds a particle's
-// eight neighbours and nothing depends on how a spacing equal to the radius rounds (0: none).
+// of the larger grid spacing, so that every window holds a particle's eight neighbours (the
+// diagonal ones too, on cells that are not square) and nothing depends on how a spacing equal to
+// the radius rounds (0: no particles).
 double window_radius(const Points& x, const Points& paper) {
   if (x.cols() == 0 || paper.cols() != x.cols()) return 0.0;
   const Vec3 extent = paper.rowwise().maxCoeff() - paper.rowwise().minCoeff();
-  const double spacing = std::sqrt(extent.x() * extent.y() / static_cast<double>(x.cols()));
+  const double spacing = std::max(axis_spacing(paper.row(0)), axis_spacing(paper.row(1)));
   return std::max(std::max(extent.x(), extent.y()) / 16.0, 1.75 * spacing);
 }
 

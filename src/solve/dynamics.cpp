@@ -41,13 +41,15 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
       r.wall_seconds = seconds();
       return r;
     }
+    // A ramp moves the model in on_check: measure the residual of the model the next steps see,
+    // and count quiet checks only once the ramp is over, so no ramp part is left unsimulated.
+    if (o.on_check) o.on_check(state, step);
     r.residual = max_residual_force(model, state.x);
     r.residual_relative = r.residual / o.force_scale;
-    small_in_a_row = r.residual_relative <= o.tolerance ? small_in_a_row + 1 : 0;
-    if (o.on_check) o.on_check(state, step);
+    const bool quiet = r.residual_relative <= o.tolerance && state.time >= o.settle_after;
+    small_in_a_row = quiet ? small_in_a_row + 1 : 0;
     if (o.progress) o.progress({"", step, o.steps, r.residual_relative, seconds()});
-    if (o.stop_when_converged && small_in_a_row >= o.confirm_checks && state.time >= o.settle_after)
-      break;
+    if (o.stop_when_converged && small_in_a_row >= o.confirm_checks) break;
     if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
   }
   if (r.iterations == 0) {

@@ -351,8 +351,9 @@ void ViewerSession::start_path(Path path) {
   if (path_.kind != Path::Kind::gradual) return;
   // The first increment at once, as follow_path takes it: the step's perturbation must still be
   // there when the change begins, or the sheet relaxes it away and buckles on round-off.
+  // Live time stepping lets go at once, as `membra run` does with an integrator and no
+  // ramp_seconds; the viewer does not ramp (a saved scene keeps the ramp for `membra run`).
   path_done_ = mode_ == LiveMode::dynamics ? path_.increments : 1;
-  // Time stepping lets go at once, as `membra run` does with an integrator.
   path_.set(static_cast<double>(path_done_) / path_.increments);
 }
 
@@ -366,6 +367,10 @@ Scene ViewerSession::to_scene() const {
     s.simulation.gravity = params_.G;
     s.simulation.dt = params_.T;
     s.simulation.damping = params_.D;
+    // A smaller T shortens the run's simulated time: keep it long enough for the scene's ramp.
+    SimulationSpec& sim = s.simulation;
+    if (sim.ramp_seconds > 0.0 && sim.ramp_seconds > static_cast<double>(sim.steps) * sim.dt)
+      sim.steps = static_cast<long>(std::ceil(sim.ramp_seconds / sim.dt));
   }
   return s;
 }

@@ -64,6 +64,19 @@ TEST(SceneWriter, AWrittenSceneRunsToTheSameForm) {
   }
 }
 
+TEST(SceneWriter, ARampIsWrittenAndReadBack) {
+  // No example ramps, so the round trip above never sees the field.
+  const json j = {
+      {"name", "r"},
+      {"sheet", {{"size", {100, 100}}, {"resolution", {5, 5}}}},
+      {"simulation", {{"solver", "rk4"}, {"T", 4e-6}, {"steps", 25000}, {"ramp_seconds", 0.1}}},
+      {"protocol", {{{"step", "stretch"}, {"lambda", {1.2, 1.2}}}}}};
+  const Scene first = parse_scene(j);  // 25000 x 4e-6 rounds just below 0.1: still accepted
+  const json w = write_scene(first);
+  EXPECT_EQ(w["simulation"]["ramp_seconds"], 0.1);
+  EXPECT_DOUBLE_EQ(parse_scene(w).simulation.ramp_seconds, 0.1);
+}
+
 TEST(SceneWriter, CustomMaterialsAreWrittenAndPresetsNamed) {
   json j = {{"name", "m"},
             {"materials", {{"soft", {{"E", 0.7}, {"thickness", 0.3}, {"density", 1.0}}}}},

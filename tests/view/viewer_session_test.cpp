@@ -138,6 +138,25 @@ TEST(ViewerSession, ASavedSessionIsASceneThatRunReproduces) {
   EXPECT_GT(a.row(2).maxCoeff() - a.row(2).minCoeff(), 1e-3 * size);  // it did bow
 }
 
+TEST(ViewerSession, ASavedSceneKeepsItsRampWhenTShrinks) {
+  // rk4 with a 0.5 s ramp in 1 s of run: halving T in the viewer would leave 0.5 s of run, and
+  // a ramp longer than the run is refused when the saved scene is read.
+  Scene scene = parse_scene(
+      {{"name", "r"},
+       {"sheet", {{"size", {100, 100}}, {"resolution", {5, 5}}}},
+       {"simulation",
+        {{"solver", "rk4"}, {"G", 0.0}, {"T", 1e-4}, {"steps", 10000}, {"ramp_seconds", 0.5}}},
+       {"protocol", json::array()}});
+  ViewerSession s(scene);
+  LiveParameters p = s.parameters();
+  p.T = 2e-5;
+  ASSERT_EQ(s.set_parameters(p), "");
+  const Scene saved = parse_scene(s.to_scene_json());
+  EXPECT_DOUBLE_EQ(saved.simulation.ramp_seconds, 0.5);
+  EXPECT_DOUBLE_EQ(saved.simulation.dt, 2e-5);
+  EXPECT_GE(static_cast<double>(saved.simulation.steps) * saved.simulation.dt, 0.5 - 1e-12);
+}
+
 TEST(ViewerSession, CutsHolesAndPinsChangeTheSheetAndUndo) {
   ViewerSession s(small_scene());
   ASSERT_EQ(s.stretch(), "");
