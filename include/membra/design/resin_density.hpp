@@ -1,0 +1,36 @@
+#pragma once
+// Resin given by a density field instead of a stencil: every spring takes the density at its
+// midpoint as its resin fraction, every bending element the density at its middle particle, and
+// the composite rules of the process (model/membrane.hpp) turn fractions into stiffness and rest
+// length. The membrane must have been impregnated everywhere first (so each element knows its
+// resin's stiffness and length at impregnation); the density then only sets the fractions.
+// Both rules are smooth in the fraction, so the released form is smooth in the density and its
+// gradient follows by the adjoint method (design/adjoint_gradient.hpp).
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "membra/design/density_field.hpp"
+#include "membra/model/membrane.hpp"
+
+namespace membra {
+
+// Where each spring and bending element reads the density: bilinear weights of the cells
+// around its midpoint on the frame (positions `x_frame`, the sheet stretched on its frame).
+struct DensitySites {
+  std::vector<DensityField::Weights> spring, bend;
+  int cells = 0;
+};
+DensitySites density_sites(const Membrane& m, const Points& x_frame, const DensityField& field);
+
+// Sets every spring's and bending element's resin fraction from the cell densities `rho` and
+// updates their stiffness and rest length (at the membrane's present release level).
+void apply_density(Membrane& m, const DensitySites& sites, const Eigen::VectorXd& rho);
+
+// For each cell c, d/d rho_c of (grad E(x) . w): how the forces' virtual work along the
+// displacement field w changes with the cell's density, at positions x. With w the adjoint
+// solution this is the equilibrium's sensitivity term of the adjoint method.
+Eigen::VectorXd density_force_sensitivity(const Membrane& m, const DensitySites& sites,
+                                          const Points& x, const Points& w);
+
+}  // namespace membra

@@ -1,0 +1,139 @@
+#include "membra/design/density_problem.hpp"
+
+#include <stdexcept>
+
+#include "membra/design/adjoint_solve.hpp"
+#include "membra/model/pattern.hpp"
+#include "membra/process/path.hpp"
+#include "membra/process/steps.hpp"
+#include "membra/solve/solver.hpp"
+
+namespace membra {
+namespace {
+
+// Follows one protocol step (and its path) on `p`.
+StepReport follow_step(const Scene& scene, PreparedScene& p, const ProtocolStep& step) {
+  StepEffects effects;
+  const Path path = apply_step(p, step, effects);
+  FrameRecorder none;
+  return follow_path(scene, p, p.membrane.state, effects.report.name, path, {}, none);
+}
+
+}  // namespace
+
+DensityProblem::DensityProblem(Scene scene, DensityField field)
+    : scene_(std::move(scene)), field_(std::move(field)) {
+  const auto& protocol = scene_.protocol;
+  if (protocol.size() != 3 || !protocol[0].as<StretchStep>() || !protocol[1].as<ImpregnateStep>() ||
+      !protocol[2].as<ReleaseStep>())
+    throw std::invalid_argument("a density design runs stretch, impregnate, release");
+  auto* resin = scene_.protocol[1].as<ImpregnateStep>();
+  if (resin->bilayer)
+    throw std::invalid_argument("a density design does not yet place a bilayer coat");
+  if (!solver_info(scene_.simulation.solver).equilibrium)
+    throw std::invalid_argument("a density design needs an equilibrium solver");
+  // Resin everywhere (a polygon beyond the frame): each element learns its resin's stiffness and
+  // length at impregnation; the density then sets only the fractions.
+  const Box2 frame = scene_frame(scene_);
+  const Vec2 pad = 0.01 * (frame.max - frame.min);
+  const Vec2 lo = frame.min - pad, hi = frame.max + pad;
+  resin->pattern = make_polygon({lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())});
+  stretched_ = prepare_scene(scene_);
+  for (int k = 0; k < 2; ++k) follow_step(scene_, stretched_, protocol[k]);
+  frame_x_ = stretched_.membrane.state.x;
+  sites_ = density_sites(stretched_.membrane, frame_x_, field_);
+}
+
+Eigen::VectorXd DensityProblem::area_weights() const {
+  const std::vector<double>& m = stretched_.membrane.sheet.model.mass;
+  Eigen::VectorXd w =
+      Eigen::Map<const Eigen::VectorXd>(m.data(), static_cast<Eigen::Index>(m.size()));
+  return w / w.sum();
+}
+
+void DensityProblem::set_target(Correspondence target, double scale, double smoothing) {
+  if (target.target.cols() != frame_x_.cols() || target.weight.size() != frame_x_.cols())
+    throw std::invalid_argument("the target needs one point and one weight per particle");
+  if (!(scale > 0.0)) throw std::invalid_argument("the target's scale must be > 0");
+  target_ = std::move(target);
+  scale_ = scale;
+  smoothing_ = smoothing;
+}
+
+bool DensityProblem::release_from_frame(const Eigen::VectorXd& rho) {
+  p_ = stretched_;
+  apply_density(p_.membrane, sites_, rho);
+  const StepReport r = follow_step(scene_, p_, scene_.protocol[2]);
+  iterations_ += r.solve.iterations;
+  ++restarts_;
+  released_ = r.solve.converged;
+  return released_;
+}
+
+bool DensityProblem::solve(const Eigen::VectorXd& rho) {
+  if (rho.size() != field_.value.size())
+    throw std::invalid_argument("one density per cell of the design's field");
+  if (released_ && warm_start) {
+    if (anchor_.cols() == p_.membrane.state.x.cols()) {
+      p_.membrane.state.x = anchor_;
+      p_.membrane.state.v.setZero();
+    }
+    apply_density(p_.membrane, sites_, rho);
+    const SolveReport r = solve_scene_step(scene_, p_, p_.membrane.state, "design", {});
+    iterations_ += r.iterations;
+    if (r.converged) return true;
+  }
+  return release_from_frame(rho);
+}
+
+void DensityProblem::anchor() {
+  if (released_) anchor_ = p_.membrane.state.x;
+}
+
+double DensityProblem::smoothness(const Eigen::VectorXd& rho, Eigen::VectorXd* gradient) const {
+  const int nx = field_.nx, ny = field_.ny;
+  const int pairs = (nx - 1) * ny + nx * (ny - 1);
+  *gradient = Eigen::VectorXd::Zero(rho.size());
+  if (pairs == 0 || smoothing_ == 0.0) return 0.0;
+  const double w = smoothing_ / pairs;
+  double sum = 0.0;
+  auto pair = [&](int a, int b) {
+    const double d = rho[a] - rho[b];
+    sum += w * d * d;
+    (*gradient)[a] += 2.0 * w * d;
+    (*gradient)[b] -= 2.0 * w * d;
+  };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      if (i + 1 < nx) pair(i + nx * j, i + 1 + nx * j);
+      if (j + 1 < ny) pair(i + nx * j, i + nx * (j + 1));
+    }
+  return sum;
+}
+
+DensityEvaluation DensityProblem::evaluate(const Eigen::VectorXd& rho) {
+  if (target_.target.cols() == 0) throw std::logic_error("set_target before evaluate");
+  DensityEvaluation ev;
+  const long iterations = iterations_;
+  const int restarts = restarts_;
+  ev.converged = solve(rho);
+  ev.newton_iterations = iterations_ - iterations;
+  ev.restarted = restarts_ > restarts;
+  ev.gradient = Eigen::VectorXd::Zero(rho.size());
+  if (!ev.converged) return ev;
+  const Points& x = positions();
+  const AlignedDistance a = aligned_distance(x, target_);
+  const double s2 = scale_ * scale_;
+  Eigen::VectorXd smooth;
+  ev.distance = a.value;
+  ev.objective = a.value / s2 + smoothness(rho, &smooth);
+  const std::optional<Points> w = solve_adjoint(p_.membrane.sheet.model, x, a.gradient / s2);
+  if (!w) {  // not a stable minimum after all: no gradient to trust
+    ev.converged = false;
+    return ev;
+  }
+  ev.gradient = smooth - density_force_sensitivity(p_.membrane, sites_, x, *w);
+  return ev;
+}
+
+}  // namespace membra
