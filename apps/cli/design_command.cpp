@@ -15,11 +15,22 @@ int cmd_design(const DesignArgs& args) {
   const std::string dir = args.out_dir.empty() ? "out/" + spec.name : args.out_dir;
   OutputSet out(dir);
   if (!args.quiet)
-    std::cerr << "membra design: " << spec.target.kind << " target, at most " << spec.evaluations
-              << " forward simulations or " << spec.budget << " s\n";
+    std::cerr << "membra design: " << spec.target.kind << " target, " << spec.method << ", at most "
+              << spec.evaluations
+              << (spec.method == "adjoint" ? " evaluations" : " forward simulations") << " or "
+              << spec.budget << " s\n";
   const DesignResult r = run_design(spec, [&](const DesignIteration& it) {
     if (args.quiet) return;
     char line[200];
+    if (it.stage == "density") {  // an adjoint iterate: distance to its own target points
+      std::snprintf(
+          line, sizeof line,
+          "  %3d  target points rms %6.2f %%  objective %.4g  |gradient| %.3g  %6.1f s%s%s%s\n",
+          it.index, it.rms_error, it.objective, it.gradient_norm, it.seconds,
+          it.best ? "  best" : "", it.note.empty() ? "" : "  ", it.note.c_str());
+      std::cerr << line;
+      return;
+    }
     std::snprintf(line, sizeof line,
                   "  %3d  rms %6.2f %%  max %6.2f %%  resin %4.0f %%  %3d pieces  %6.1f s%s%s%s\n",
                   it.index, it.rms_error, it.max_error, 100.0 * it.resin_share, it.pieces,

@@ -40,8 +40,10 @@ def design(target, out=None, progress=None, base_dir=None):
 
     target: a design file path, or its content as a dict (docs/inverse_design.md).
     out: if given, the folder to write the outputs to.
-    progress: None or a callable taking a dict per forward simulation {"index", "rms_error",
-        "max_error", "resin_share", "pieces", "seconds", "best", "note"}.
+    progress: None or a callable taking a dict per forward simulation {"index", "stage",
+        "rms_error", "max_error", "resin_share", "pieces", "seconds", "best", "note",
+        "objective", "gradient_norm"}; with "method": "adjoint" the density iterates have stage
+        "density" (rms_error: to the particles' own target points) and the stencil "stencil".
     Raises membra.SceneError naming the field at fault in the design file.
     """
     if isinstance(target, dict):

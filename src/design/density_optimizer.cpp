@@ -19,6 +19,7 @@ struct Run {
   Stopwatch clock;
   DensityOptimum best;
   double worst = 0.0;  // the largest objective seen: a failed equilibrium counts as worse
+  double scale = 1.0;  // what the optimiser sees: objective x scale (its gradient likewise)
 
   double operator()(const std::vector<double>& v, std::vector<double>& grad) {
     const Eigen::VectorXd rho =
@@ -46,10 +47,10 @@ struct Run {
     } else {
       value = 10.0 * worst + 1.0;
     }
-    if (!grad.empty()) Eigen::Map<Eigen::VectorXd>(grad.data(), rho.size()) = ev.gradient;
+    if (!grad.empty()) Eigen::Map<Eigen::VectorXd>(grad.data(), rho.size()) = scale * ev.gradient;
     best.history.push_back(it);
     if (progress) progress(it);
-    return value;
+    return scale * value;
   }
 };
 
@@ -79,13 +80,20 @@ DensityOptimum optimize_density(DensityProblem& problem, const Eigen::VectorXd& 
                                 const std::function<void(const DensityIterate&)>& progress) {
   const auto n = static_cast<unsigned>(start.size());
   if (n == 0) throw std::invalid_argument("no design variables");
-  Run run{problem, progress, Stopwatch{}, {}, 0.0};
+  Run run{problem, progress, Stopwatch{}, {}, 0.0, 1.0};
+  // The optimiser's own tests are absolute: scale the objective so that the start's gradient is
+  // of order one (a nearly flat, symmetric start has a gradient of 1e-6 and L-BFGS stopped there
+  // at once, "converged").
+  const DensityEvaluation first = problem.evaluate(start.cwiseMax(0.0).cwiseMin(1.0));
+  if (first.converged && first.gradient.cwiseAbs().maxCoeff() > 0.0)
+    run.scale = 1.0 / first.gradient.cwiseAbs().maxCoeff();
   nlopt::opt opt(nlopt::LD_LBFGS, n);
   opt.set_lower_bounds(0.0);
   opt.set_upper_bounds(1.0);
   opt.set_maxeval(std::max(1, options.evaluations));
   if (options.max_seconds > 0.0) opt.set_maxtime(options.max_seconds);
-  opt.set_ftol_rel(options.relative_change);
+  if (options.relative_change > 0.0) opt.set_ftol_rel(options.relative_change);
+  opt.set_xtol_rel(1e-8);
   // An exception in an evaluation (a requested stop, bad input) ends the optimisation and is
   // rethrown as it was, not as NLopt's own.
   std::exception_ptr failure;

@@ -8,6 +8,7 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
+#include "membra/design/adjoint_design.hpp"
 #include "membra/measure/curvature.hpp"
 
 namespace membra {
@@ -19,15 +20,7 @@ double natural_area(const DesignSpec& s, bool disk) {
   return disk ? 0.25 * std::acos(-1.0) * wx * wy : wx * wy;
 }
 
-struct Evaluation {
-  Stencil stencil;
-  Scene scene;
-  RunResult run;
-  ShapeError error;
-  double rms = std::numeric_limits<double>::infinity();  // % of the diameter
-  double max = std::numeric_limits<double>::infinity();
-  std::string note;
-};
+using Evaluation = StencilTrial;
 
 }  // namespace
 
@@ -131,32 +124,7 @@ class Search {
 };
 
 Evaluation Search::evaluate(const DensityParameters& d) const {
-  Evaluation e;
-  const Vec2 centre = 0.5 * frame_.max;
-  const bool disk = r_.target.disk;
-  const auto inside = [&](const Vec2& p) {
-    return !disk || (p - centre).norm() <= 0.5 * spec_.frame;
-  };
-  e.stencil =
-      layout_stencil([&](const Vec2& p) { return d(p, frame_); }, frame_, spec_.layout, inside);
-  e.scene = stencil_scene(spec_, e.stencil);
-  try {
-    e.run = run_scene(e.scene);
-  } catch (const InputError& err) {
-    // E.g. squares so small on a coarse grid that they cover no spring: not a form.
-    e.note = std::string("not simulated: ") + err.what();
-    return e;
-  }
-  if (e.run.solve.diverged) {
-    e.note = "diverged";
-    return e;
-  }
-  if (!e.run.solve.converged) e.note = "did not converge";
-  const Membrane& m = e.run.prepared.membrane;
-  e.error = compare_shapes(m.state.x, m.sheet.triangles, r_.target);
-  e.rms = 100.0 * e.error.rms / r_.target.diameter;
-  e.max = 100.0 * e.error.max / r_.target.diameter;
-  return e;
+  return try_stencil(spec_, r_.target, [&](const Vec2& p) { return d(p, frame_); });
 }
 
 bool Search::record(const DensityParameters& d, Evaluation&& e, double seconds) {
@@ -194,12 +162,7 @@ void Search::finish() {
                   "No simulation reached equilibrium: the form shown is the last state of the "
                   "best one, not a prediction (more iterations, or the static solver).";
   r_.best = best_d_;
-  r_.scene = std::move(best_.scene);
-  r_.stencil = std::move(best_.stencil);
-  r_.run = std::move(best_.run);
-  r_.error = std::move(best_.error);
-  r_.rms_error = best_.rms;
-  r_.max_error = best_.max;
+  adopt_stencil(std::move(best_), r_);
 }
 
 // Buckled forms have many branches, and the start from mechanics may sit on a flat one (a sheet
@@ -245,6 +208,44 @@ void pattern_search(Search& search) {
 
 }  // namespace
 
+StencilTrial try_stencil(const DesignSpec& spec, const TargetSurface& target,
+                         const std::function<double(const Vec2&)>& density) {
+  StencilTrial e;
+  const Box2 frame{Vec2::Zero(), Vec2(spec.frame, spec.frame)};
+  const Vec2 centre = 0.5 * frame.max;
+  const auto inside = [&](const Vec2& p) {
+    return !target.disk || (p - centre).norm() <= 0.5 * spec.frame;
+  };
+  e.stencil = layout_stencil(density, frame, spec.layout, inside);
+  e.scene = stencil_scene(spec, e.stencil);
+  try {
+    e.run = run_scene(e.scene);
+  } catch (const InputError& err) {
+    // E.g. squares so small on a coarse grid that they cover no spring: not a form.
+    e.note = std::string("not simulated: ") + err.what();
+    return e;
+  }
+  if (e.run.solve.diverged) {
+    e.note = "diverged";
+    return e;
+  }
+  if (!e.run.solve.converged) e.note = "did not converge";
+  const Membrane& m = e.run.prepared.membrane;
+  e.error = compare_shapes(m.state.x, m.sheet.triangles, target);
+  e.rms = 100.0 * e.error.rms / target.diameter;
+  e.max = 100.0 * e.error.max / target.diameter;
+  return e;
+}
+
+void adopt_stencil(StencilTrial&& trial, DesignResult& r) {
+  r.scene = std::move(trial.scene);
+  r.stencil = std::move(trial.stencil);
+  r.run = std::move(trial.run);
+  r.error = std::move(trial.error);
+  r.rms_error = trial.rms;
+  r.max_error = trial.max;
+}
+
 DesignResult run_design(const DesignSpec& spec,
                         const std::function<void(const DesignIteration&)>& progress) {
   const Stopwatch clock;
@@ -252,6 +253,12 @@ DesignResult run_design(const DesignSpec& spec,
   r.spec = spec;
   r.target = make_target(spec.target);
   start_from_mechanics(spec, r);
+  if (spec.method == "adjoint") {
+    design_by_adjoint(spec, r, progress);
+    r.seconds = clock.seconds();
+    return r;
+  }
+  r.method = "pattern_search";
   Search search(spec, r, progress);
   for (const DensityParameters& d : starts(r.start)) {
     if (search.evaluations() > 0 && search.out_of_budget()) break;

@@ -12,8 +12,20 @@ nlohmann::json make_design_report(const DesignResult& d) {
     return nlohmann::json{{"mean", p.mean}, {"radial", p.radial}, {"anisotropy", p.anisotropy}};
   };
   nlohmann::json iterations = nlohmann::json::array();
-  for (const DesignIteration& it : d.history)
+  for (const DesignIteration& it : d.history) {
+    if (it.stage == "density") {  // an adjoint iterate: no stencil, distances to own points
+      iterations.push_back({{"index", it.index},
+                            {"stage", it.stage},
+                            {"correspondence_rms", it.rms_error},
+                            {"objective", it.objective},
+                            {"gradient_norm", it.gradient_norm},
+                            {"seconds", it.seconds},
+                            {"best", it.best},
+                            {"note", it.note}});
+      continue;
+    }
     iterations.push_back({{"index", it.index},
+                          {"stage", it.stage},
                           {"rms_error", it.rms_error},
                           {"max_error", it.max_error},
                           {"resin_share", it.resin_share},
@@ -22,7 +34,9 @@ nlohmann::json make_design_report(const DesignResult& d) {
                           {"best", it.best},
                           {"note", it.note},
                           {"parameters", params(it.parameters)}});
+  }
   report["design"] = {
+      {"method", d.method},
       {"rms_error", d.rms_error},
       {"max_error", d.max_error},
       {"error_unit", "% of the target's diameter (square: side), after rigid alignment"},
@@ -43,6 +57,20 @@ nlohmann::json make_design_report(const DesignResult& d) {
       {"evaluations", d.history.size()},
       {"seconds", d.seconds},
       {"iterations", iterations}};
+  if (d.method == "adjoint") {
+    nlohmann::json& a = report["design"];
+    a["density_rms_error"] = d.density_rms_error;
+    a["stopped"] = d.stopped;
+    a["reach"] = {{"unreachable_share", d.unreachable_share},
+                  {"asks_min", d.asks_min},
+                  {"asks_max", d.asks_max}};
+    a["calibration"] = {{"share", d.calibration_share}, {"density", d.calibration_density}};
+    a["density"] = {
+        {"cells", {d.density.nx, d.density.ny}},
+        {"cell_mm", d.density.cell_size().x() / units::mm},
+        {"values", std::vector<double>(d.density.value.data(),
+                                       d.density.value.data() + d.density.value.size())}};
+  }
   return report;
 }
 

@@ -141,8 +141,17 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
 void read_design_settings(const JsonObject& top, DesignSpec& s) {
   if (!top.has("design")) return;
   const JsonObject o =
-      top.object("design", {"evaluations", "budget", "solver", "tolerance", "increments"});
-  s.evaluations = static_cast<int>(o.integer("evaluations", s.evaluations, 1, 10000));
+      top.object("design", {"method", "evaluations", "budget", "solver", "tolerance", "increments",
+                            "density_cell", "smoothing"});
+  s.method = o.string("method", s.method, {"adjoint", "pattern_search"});
+  // The adjoint's evaluations are cheap warm starts: it takes more of them by default.
+  s.evaluations = static_cast<int>(
+      o.integer("evaluations", s.method == "adjoint" ? 80 : s.evaluations, 1, 10000));
+  s.density_cell =
+      o.number("density_cell", s.density_cell / units::mm, Bounds::positive()) * units::mm;
+  if (s.density_cell > 0.5 * s.frame)
+    throw InputError(o.pointer("density_cell"), "the density cell must be at most half the frame");
+  s.smoothing = o.number("smoothing", s.smoothing, Bounds::between(0.0, 1e6));
   s.budget = o.number("budget", s.budget, Bounds::positive());
   std::vector<std::string_view> equilibrium;
   for (const SolverInfo& info : solver_table())

@@ -9,9 +9,11 @@
 // io/design_reader.hpp.
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "membra/design/density_field.hpp"
 #include "membra/design/shape_distance.hpp"
 #include "membra/design/stencil_layout.hpp"
 #include "membra/design/target_surface.hpp"
@@ -30,8 +32,14 @@ struct DesignSpec {
   std::string resin_side = "top";  // the face the stencil is applied to
   bool bilayer = false;            // resin on that face only (the composite curls; bilayer.hpp)
   StencilLayout layout;            // cell 20 mm, minimum feature 4 mm
-  int evaluations = 24;            // forward simulations at most
-  double budget = 900.0;           // s of wall time at most
+  // "adjoint": densities per cell optimised through the equilibrium's adjoint, then laid out as
+  // a stencil (docs/inverse_design.md); "pattern_search": three density parameters searched
+  // with a forward simulation of the stencil each.
+  std::string method = "pattern_search";
+  double density_cell = 0.01;  // m, adjoint: the design variables' cells
+  double smoothing = 1e-4;     // adjoint: weight of the mean squared difference of neighbours
+  int evaluations = 24;        // forward simulations (adjoint: forward + adjoint solves) at most
+  double budget = 900.0;       // s of wall time at most
   Solver solver = Solver::static_fire;
   double tolerance = 1e-6;
   int increments = 10;  // of the release path
@@ -49,6 +57,11 @@ struct DensityParameters {
 
 struct DesignIteration {
   int index = 0;
+  // "stencil": a stencil simulated and compared (rms and max after rigid alignment);
+  // "density": an adjoint iterate, whose rms_error is the distance to the particles' own target
+  // points (no max, pieces or share).
+  std::string stage = "stencil";
+  double objective = 0.0, gradient_norm = 0.0;  // density iterates
   DensityParameters parameters;
   double rms_error = 0.0, max_error = 0.0;  // % of the target's diameter
   double resin_share = 0.0;                 // of the sheet's area on the frame
@@ -72,7 +85,36 @@ struct DesignResult {
   double flat_error = 0.0;  // rms % of a flat sheet of the target's footprint: the bar to beat
   std::vector<DesignIteration> history;
   double seconds = 0.0;
+  // adjoint: the optimised densities, the form they release to (its rms error after rigid
+  // alignment, before the stencil's pieces replace them), stage 1's reachability per cell and
+  // why the optimiser stopped.
+  std::string method;
+  DensityField density;
+  double density_rms_error = 0.0;
+  Points density_form;             // the density design's released form (the stencil's triangles)
+  ShapeError density_error;        // its distance to the target
+  double unreachable_share = 0.0;  // of the cells: asking for a density outside [0, 1]
+  double asks_min = 0.0, asks_max = 0.0;
+  std::string stopped;
+  // adjoint: the stencil calibration (area share of a cell's square -> the density it acts as).
+  std::vector<double> calibration_share, calibration_density;
 };
+
+// A stencil laid out from `density` (frame coordinates), simulated as `membra run` would and
+// compared with the target after rigid alignment.
+struct StencilTrial {
+  Stencil stencil;
+  Scene scene;
+  RunResult run;
+  ShapeError error;
+  double rms = std::numeric_limits<double>::infinity();  // % of the target's diameter
+  double max = std::numeric_limits<double>::infinity();
+  std::string note;  // why it is not a prediction ("did not converge", ...); empty if it is
+};
+StencilTrial try_stencil(const DesignSpec& spec, const TargetSurface& target,
+                         const std::function<double(const Vec2&)>& density);
+// Makes the trial the design's result: its scene, stencil, run, error and errors in %.
+void adopt_stencil(StencilTrial&& trial, DesignResult& r);
 
 // The scene that simulates `stencil` for a design: spec.scene with the stencil as its resin
 // (without the impregnate step when the stencil is empty).

@@ -3,7 +3,9 @@
 // density that asks for the right metric there. The target (a height field over its footprint,
 // z up) is parametrised over the frame by scaling: a particle at frame position P, measured from
 // the sheet's centre, belongs at s P on the footprint, lifted onto the surface, with
-// s = target diameter / the sheet's extent on the frame. Along x the sheet must then shrink by
+// s = target diameter / the sheet's extent on the frame (its particles' extent: a coarse disk
+// sheet covers less than its disk, and the error is measured both ways, so the particles must
+// cover the whole target). Along x the sheet must then shrink by
 // s sqrt(1 + h_x^2) of its frame length (and likewise along y): between 1 / lambda (bare latex,
 // back at its natural length) and 1 (resin, kept at its stretched length), linear in the resin
 // share for a uniform sheet. Where the target asks for less or more, it cannot be reached there

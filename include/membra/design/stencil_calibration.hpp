@@ -1,0 +1,30 @@
+#pragma once
+// What a stencil of squares does, in the densities of the adjoint design: a cell whose square
+// covers an area share a of it releases like a uniform resin density rho(a) — measured, not
+// assumed. membra simulates uniform stencils (the same square in every cell) on the design's own
+// sheet and finds the uniform density whose release has the same area (the metric, buckles and
+// all). Between the samples the table is linear; the shares a stencil can have are 0, those of
+// squares from the minimum feature up to a cell less the minimum feature, and 1 (a filled cell),
+// so a wanted density rounds to the nearest of those (docs/inverse_design.md).
+#include <functional>
+#include <vector>
+
+#include "membra/design/inverse_design.hpp"
+
+namespace membra {
+
+struct StencilCalibration {
+  std::vector<double> share;                // area shares, increasing: 0, the sampled squares, 1
+  std::vector<double> density;              // the uniform density each releases like
+  double min_share = 0.0, max_share = 1.0;  // of the smallest and largest square that can be cut
+  double density_of(double share) const;
+  // The area share to lay out for density rho: the table inverted, rounded to what can be cut.
+  double share_for(double rho) const;
+};
+
+// `samples` squares from the smallest to the largest the layout allows, each a forward
+// simulation at the design's resolution. `progress` is told each sample's (share, density).
+StencilCalibration calibrate_stencil(const DesignSpec& spec, int samples = 4,
+                                     const std::function<void(double, double)>& progress = {});
+
+}  // namespace membra

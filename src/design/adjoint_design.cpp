@@ -1,0 +1,141 @@
+#include "membra/design/adjoint_design.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "membra/core/input_error.hpp"
+#include "membra/core/stopwatch.hpp"
+#include "membra/design/density_optimizer.hpp"
+#include "membra/design/density_problem.hpp"
+#include "membra/design/stencil_calibration.hpp"
+#include "membra/design/target_correspondence.hpp"
+
+namespace membra {
+namespace {
+
+// Stage 1's verdict per cell, in the result and its message.
+void note_reach(const MetricStart& start, DesignResult& r) {
+  r.unreachable_share = start.unreachable_share;
+  r.asks_min = start.asks_min;
+  r.asks_max = start.asks_max;
+  if (start.unreachable_share <= 0.0) return;
+  std::ostringstream why;
+  why << "In " << std::lround(100.0 * start.unreachable_share)
+      << " % of the cells the target asks for a resin density outside what the material can "
+         "give (from "
+      << start.asks_min << " to " << start.asks_max
+      << ", where 0 is bare latex back at its natural size and 1 resin kept at its stretched "
+         "size): "
+      << (start.asks_max > 1.0 ? "more stretch than the frame gives there (a larger frame or "
+                                 "pre-stretch, or a flatter target)"
+                               : "more shrink than the latex gives there (more pre-stretch, or "
+                                 "a larger target)")
+      << ".";
+  if (!r.message.empty()) r.message += ' ';
+  r.message += why.str();
+}
+
+DesignIteration density_iterate(const DensityIterate& it, double diameter) {
+  DesignIteration d;
+  d.index = it.index;
+  d.stage = "density";
+  d.rms_error = 100.0 * it.rms / diameter;
+  d.objective = it.objective;
+  d.gradient_norm = it.gradient_norm;
+  d.seconds = it.seconds;
+  d.best = it.best;
+  if (!it.converged)
+    d.note = "no stable equilibrium";
+  else if (it.restarted)
+    d.note = "released again from the frame";
+  return d;
+}
+
+// The mean density, as the pattern search's parameters describe a design.
+DensityParameters mean_only(const Eigen::VectorXd& rho) {
+  DensityParameters p;
+  p.mean = rho.mean();
+  p.radial = p.anisotropy = 0.0;
+  return p;
+}
+
+// Stage 3: squares whose measured effect is the wanted density (design/stencil_calibration.hpp),
+// simulated from the flat start; the stencil's trial becomes the design's result.
+void lay_out_and_simulate(const DesignSpec& spec, DesignResult& r, const Stopwatch& clock,
+                          const std::function<void(const DesignIteration&)>& progress) {
+  const TargetSurface& target = r.target;
+  const StencilCalibration calibration = calibrate_stencil(spec);
+  r.calibration_share = calibration.share;
+  r.calibration_density = calibration.density;
+  StencilTrial t = try_stencil(
+      spec, target, [&](const Vec2& p) { return calibration.share_for(r.density.at(p)); });
+  DesignIteration s;
+  s.index = static_cast<int>(r.history.size());
+  s.rms_error = t.rms;
+  s.max_error = t.max;
+  s.resin_share = t.stencil.resin_share;
+  s.pieces = t.stencil.pieces;
+  s.seconds = clock.seconds();
+  s.best = true;
+  s.note = t.note;
+  r.history.push_back(s);
+  if (progress) progress(s);
+  if (t.run.prepared.membrane.state.x.cols() == 0)
+    throw InputError(spec.file.string(), "the designed stencil could not be simulated: " + t.note);
+  if (!t.note.empty()) {
+    if (!r.message.empty()) r.message += ' ';
+    r.message += "The stencil's simulation ";
+    r.message += t.note;
+    r.message += ": the form shown is its last state, not a prediction.";
+  }
+  adopt_stencil(std::move(t), r);
+}
+
+}  // namespace
+
+void design_by_adjoint(const DesignSpec& spec, DesignResult& r,
+                       const std::function<void(const DesignIteration&)>& progress) {
+  const Stopwatch clock;
+  r.method = "adjoint";
+  // Newton to a tight tolerance: the adjoint needs the equilibrium's Hessian, and gradients are
+  // only as exact as the equilibria.
+  Scene scene = spec.scene;
+  scene.simulation.solver = Solver::newton;
+  scene.simulation.tolerance = std::min(scene.simulation.tolerance, 1e-8);
+  const Box2 frame{Vec2::Zero(), Vec2(spec.frame, spec.frame)};
+  DensityProblem problem(scene, make_density_field(frame, spec.density_cell, 0.5));
+  const TargetSurface& target = r.target;
+  problem.set_target(
+      target_correspondence(target, problem.frame_positions(), problem.area_weights()),
+      target.diameter, spec.smoothing);
+  const MetricStart start =
+      metric_start(target, problem.frame_positions(), problem.field(), spec.lambda);
+  note_reach(start, r);
+
+  DensityOptimizerOptions o;
+  o.evaluations = spec.evaluations;
+  o.max_seconds = spec.budget;
+  // A flat or symmetric start has a tiny gradient, and the first steps change the objective by
+  // little: only the evaluation budget (or steps that no longer move the densities) ends it.
+  o.relative_change = 0.0;
+  const DensityOptimum best =
+      optimize_density(problem, start.density, o, [&](const DensityIterate& it) {
+        r.history.push_back(density_iterate(it, target.diameter));
+        if (progress) progress(r.history.back());
+      });
+  r.stopped = best.stopped;
+  r.density = problem.field();
+  r.density.value = best.rho;
+  r.start = mean_only(start.density);
+  r.best = mean_only(best.rho);
+  if (problem.solve(best.rho)) {
+    r.density_form = problem.positions();
+    r.density_error = compare_shapes(r.density_form, problem.membrane().sheet.triangles, target);
+    r.density_rms_error = 100.0 * r.density_error.rms / target.diameter;
+  }
+
+  lay_out_and_simulate(spec, r, clock, progress);
+}
+
+}  // namespace membra
