@@ -9,6 +9,7 @@
 #include "membra/design/density_optimizer.hpp"
 #include "membra/design/density_problem.hpp"
 #include "membra/design/stencil_calibration.hpp"
+#include "membra/design/stencil_trial.hpp"
 #include "membra/design/target_correspondence.hpp"
 
 namespace membra {

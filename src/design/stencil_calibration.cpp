@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "membra/design/density_problem.hpp"
+#include "membra/design/stencil_trial.hpp"
 #include "membra/design/target_surface.hpp"
 
 namespace membra {

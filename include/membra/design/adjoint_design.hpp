@@ -12,7 +12,7 @@
 //     pattern search compares its stencils, so the reported error is the stencil's.
 #include <functional>
 
-#include "membra/design/inverse_design.hpp"
+#include "membra/design/design_result.hpp"
 
 namespace membra {
 

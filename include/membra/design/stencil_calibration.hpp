@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-#include "membra/design/inverse_design.hpp"
+#include "membra/design/design_spec.hpp"
 
 namespace membra {
 
