@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "membra/core/input_error.hpp"
@@ -46,10 +47,12 @@ DesignIteration density_iterate(const DensityIterate& it, double diameter) {
   d.gradient_norm = it.gradient_norm;
   d.seconds = it.seconds;
   d.best = it.best;
-  if (!it.converged)
+  if (!it.converged) {  // nothing measured: no numbers (null in report.json)
     d.note = "no stable equilibrium";
-  else if (it.restarted)
+    d.rms_error = d.objective = d.gradient_norm = std::numeric_limits<double>::quiet_NaN();
+  } else if (it.restarted) {
     d.note = "released again from the frame";
+  }
   return d;
 }
 
@@ -63,9 +66,10 @@ DensityParameters mean_only(const Eigen::VectorXd& rho) {
 
 // Stage 3: squares whose measured effect is the wanted density (design/stencil_calibration.hpp),
 // simulated from the flat start; the stencil's trial becomes the design's result.
-void lay_out_and_simulate(const DesignSpec& spec, DesignResult& r, const Stopwatch& clock,
+void lay_out_and_simulate(const DesignSpec& spec, DesignResult& r,
                           const std::function<void(const DesignIteration&)>& progress) {
   const TargetSurface& target = r.target;
+  const Stopwatch clock;
   const StencilCalibration calibration = calibrate_stencil(spec);
   r.calibration_share = calibration.share;
   r.calibration_density = calibration.density;
@@ -82,7 +86,8 @@ void lay_out_and_simulate(const DesignSpec& spec, DesignResult& r, const Stopwat
   s.note = t.note;
   r.history.push_back(s);
   if (progress) progress(s);
-  if (t.run.prepared.membrane.state.x.cols() == 0)
+  // No form, or a blown-up one, has no error to report (the pattern search never adopts either).
+  if (t.run.prepared.membrane.state.x.cols() == 0 || !std::isfinite(t.rms))
     throw InputError(spec.file.string(), "the designed stencil could not be simulated: " + t.note);
   if (!t.note.empty()) {
     if (!r.message.empty()) r.message += ' ';
@@ -116,7 +121,7 @@ void design_by_adjoint(const DesignSpec& spec, DesignResult& r,
 
   DensityOptimizerOptions o;
   o.evaluations = spec.evaluations;
-  o.max_seconds = spec.budget;
+  o.max_seconds = 0.8 * spec.budget;  // the rest for the calibration and the stencil's run
   // A flat or symmetric start has a tiny gradient, and the first steps change the objective by
   // little: only the evaluation budget (or steps that no longer move the densities) ends it.
   o.relative_change = 0.0;
@@ -136,7 +141,7 @@ void design_by_adjoint(const DesignSpec& spec, DesignResult& r,
     r.density_rms_error = 100.0 * r.density_error.rms / target.diameter;
   }
 
-  lay_out_and_simulate(spec, r, clock, progress);
+  lay_out_and_simulate(spec, r, progress);
 }
 
 }  // namespace membra

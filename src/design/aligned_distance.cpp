@@ -6,7 +6,10 @@ namespace membra {
 
 AlignedDistance aligned_distance(const Points& x, const Correspondence& c) {
   const Eigen::Index n = x.cols();
-  const Vec3 xm = x * c.weight, tm = c.target * c.weight;
+  // The optimal translation matches weighted centroids: with weights not summing to one it would
+  // not, and the gradient (envelope theorem) would be wrong.
+  const double total = c.weight.sum();
+  const Vec3 xm = x * c.weight / total, tm = c.target * c.weight / total;
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   for (Eigen::Index i = 0; i < n; ++i)
     cov += c.weight[i] * (c.target.col(i) - tm) * (x.col(i) - xm).transpose();

@@ -34,6 +34,9 @@ AreaCurve area_curve(const DesignSpec& spec, const Scene& scene) {
       throw std::runtime_error("the calibration's uniform sheet found no equilibrium");
     c.rho.push_back(rho);
     c.area.push_back(mesh_area(problem.positions(), problem.membrane().sheet.triangles));
+    // The inverse below needs the area to grow with the density (resin keeps the stretched size).
+    if (k > 0 && !(c.area[k] > c.area[k - 1]))
+      throw std::runtime_error("the calibration's uniform sheet did not grow with its density");
   }
   return c;
 }
@@ -57,10 +60,14 @@ StencilCalibration calibrate_stencil(const DesignSpec& spec, int samples,
   Scene scene = spec.scene;
   scene.simulation.solver = Solver::newton;
   const AreaCurve curve = area_curve(spec, scene);
-  const double s_min = spec.layout.min_feature / spec.layout.cell, s_max = 1.0 - s_min;
+  // The cell as layout_stencil lays it (a whole number of cells across the frame).
+  const double cell = spec.frame / std::max(1.0, std::round(spec.frame / spec.layout.cell));
+  const double s_min = spec.layout.min_feature / cell, s_max = 1.0 - s_min;
   StencilCalibration c;
-  c.min_share = s_min * s_min;
-  c.max_share = s_max * s_max;
+  // Just inside the limits, so that round-off neither drops the smallest square nor fills the
+  // cell of the largest.
+  c.min_share = s_min * s_min * (1.0 + 1e-9);
+  c.max_share = s_max * s_max * (1.0 - 1e-9);
   c.share = {0.0};
   c.density = {0.0};
   for (int k = 0; k < samples; ++k) {
@@ -75,6 +82,7 @@ StencilCalibration calibrate_stencil(const DesignSpec& spec, int samples,
     const Membrane& m = run.prepared.membrane;
     const double rho = interpolate(curve.area, curve.rho, mesh_area(m.state.x, m.sheet.triangles));
     c.share.push_back(a);
+    c.measured.push_back(rho);
     c.density.push_back(std::max(rho, c.density.back()));  // keep the table monotone
     if (progress) progress(a, rho);
   }

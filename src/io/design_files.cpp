@@ -1,44 +1,70 @@
 #include "membra/io/design_files.hpp"
 
+#include <cmath>
+
 #include "membra/core/units.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/report.hpp"
 
 namespace membra {
 
+namespace {
+
+// A number, or null where there is none (a failed equilibrium): never NaN or inf in the file.
+nlohmann::json number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+nlohmann::json params(const DensityParameters& p) {
+  return {{"mean", p.mean}, {"radial", p.radial}, {"anisotropy", p.anisotropy}};
+}
+
+nlohmann::json iteration(const DesignIteration& it) {
+  if (it.stage == "density")  // an adjoint iterate: no stencil, distances to its own points
+    return {{"index", it.index},
+            {"stage", it.stage},
+            {"correspondence_rms", number(it.rms_error)},
+            {"objective", number(it.objective)},
+            {"gradient_norm", number(it.gradient_norm)},
+            {"seconds", it.seconds},
+            {"best", it.best},
+            {"note", it.note}};
+  return {{"index", it.index},
+          {"stage", it.stage},
+          {"rms_error", number(it.rms_error)},
+          {"max_error", number(it.max_error)},
+          {"resin_share", it.resin_share},
+          {"pieces", it.pieces},
+          {"seconds", it.seconds},
+          {"best", it.best},
+          {"note", it.note},
+          {"parameters", params(it.parameters)}};
+}
+
+// The adjoint method's own keys (docs/inverse_design.md).
+void add_adjoint(const DesignResult& d, nlohmann::json& a) {
+  a["density_rms_error"] = number(d.density_rms_error);
+  a["stopped"] = d.stopped;
+  a["reach"] = {{"unreachable_share", d.unreachable_share},
+                {"asks_min", d.asks_min},
+                {"asks_max", d.asks_max}};
+  a["calibration"] = {{"share", d.calibration_share}, {"density", d.calibration_density}};
+  a["density"] = {{"cells", {d.density.nx, d.density.ny}},
+                  {"cell_mm", d.density.cell_size().x() / units::mm},
+                  {"values", std::vector<double>(d.density.value.data(),
+                                                 d.density.value.data() + d.density.value.size())}};
+}
+
+}  // namespace
+
 nlohmann::json make_design_report(const DesignResult& d) {
   nlohmann::json report = make_report(d.scene, d.run);
-  auto params = [](const DensityParameters& p) {
-    return nlohmann::json{{"mean", p.mean}, {"radial", p.radial}, {"anisotropy", p.anisotropy}};
-  };
   nlohmann::json iterations = nlohmann::json::array();
-  for (const DesignIteration& it : d.history) {
-    if (it.stage == "density") {  // an adjoint iterate: no stencil, distances to own points
-      iterations.push_back({{"index", it.index},
-                            {"stage", it.stage},
-                            {"correspondence_rms", it.rms_error},
-                            {"objective", it.objective},
-                            {"gradient_norm", it.gradient_norm},
-                            {"seconds", it.seconds},
-                            {"best", it.best},
-                            {"note", it.note}});
-      continue;
-    }
-    iterations.push_back({{"index", it.index},
-                          {"stage", it.stage},
-                          {"rms_error", it.rms_error},
-                          {"max_error", it.max_error},
-                          {"resin_share", it.resin_share},
-                          {"pieces", it.pieces},
-                          {"seconds", it.seconds},
-                          {"best", it.best},
-                          {"note", it.note},
-                          {"parameters", params(it.parameters)}});
-  }
+  for (const DesignIteration& it : d.history) iterations.push_back(iteration(it));
   report["design"] = {
       {"method", d.method},
-      {"rms_error", d.rms_error},
-      {"max_error", d.max_error},
+      {"rms_error", number(d.rms_error)},
+      {"max_error", number(d.max_error)},
       {"error_unit", "% of the target's diameter (square: side), after rigid alignment"},
       {"flat_error", d.flat_error},
       {"reachable", d.reachable},
@@ -57,20 +83,7 @@ nlohmann::json make_design_report(const DesignResult& d) {
       {"evaluations", d.history.size()},
       {"seconds", d.seconds},
       {"iterations", iterations}};
-  if (d.method == "adjoint") {
-    nlohmann::json& a = report["design"];
-    a["density_rms_error"] = d.density_rms_error;
-    a["stopped"] = d.stopped;
-    a["reach"] = {{"unreachable_share", d.unreachable_share},
-                  {"asks_min", d.asks_min},
-                  {"asks_max", d.asks_max}};
-    a["calibration"] = {{"share", d.calibration_share}, {"density", d.calibration_density}};
-    a["density"] = {
-        {"cells", {d.density.nx, d.density.ny}},
-        {"cell_mm", d.density.cell_size().x() / units::mm},
-        {"values", std::vector<double>(d.density.value.data(),
-                                       d.density.value.data() + d.density.value.size())}};
-  }
+  if (d.method == "adjoint") add_adjoint(d, report["design"]);
   return report;
 }
 

@@ -152,6 +152,10 @@ void read_design_settings(const JsonObject& top, DesignSpec& s) {
   if (s.density_cell > 0.5 * s.frame)
     throw InputError(o.pointer("density_cell"), "the density cell must be at most half the frame");
   s.smoothing = o.number("smoothing", s.smoothing, Bounds::between(0.0, 1e6));
+  if (s.method == "adjoint" && s.bilayer)
+    throw InputError("/resin/bilayer",
+                     "the adjoint method does not place a coat on one face yet: use "
+                     "\"method\": \"pattern_search\" for a bilayer");
   s.budget = o.number("budget", s.budget, Bounds::positive());
   std::vector<std::string_view> equilibrium;
   for (const SolverInfo& info : solver_table())

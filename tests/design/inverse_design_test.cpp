@@ -2,6 +2,7 @@
 // the stencil's scene reproduces the reported form, and an unreachable target says why.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
@@ -79,19 +80,21 @@ TEST_P(AdjointKinds, TheObjectiveFallsAndTheStencilIsSimulated) {
   for (const DesignIteration& it : d.history)
     if (it.stage == "density" && it.note.empty()) best = std::min(best, it.objective);
   EXPECT_LT(best, 0.9 * first.objective) << "the objective did not fall by 10 %";
+  for (const DesignIteration& it : d.history)
+    if (it.stage == "density") {
+      EXPECT_NE(it.note, "no stable equilibrium") << it.index;
+    }
   const DesignIteration& last = d.history.back();
   EXPECT_EQ(last.stage, "stencil");
-  EXPECT_EQ(d.rms_error, last.rms_error);
+  EXPECT_TRUE(std::isfinite(d.rms_error));
+  EXPECT_GT(d.rms_error, 0.0);
   EXPECT_GT(d.density_rms_error, 0.0);
   EXPECT_EQ(d.density.value.size(), 64);
   EXPECT_GE(d.density.value.minCoeff(), 0.0);
   EXPECT_LE(d.density.value.maxCoeff(), 1.0);
-  // The calibration table rises from (0, 0) to (1, 1).
+  // The calibration ran (its own test checks what it measures).
   ASSERT_GE(d.calibration_share.size(), 3u);
-  for (size_t k = 1; k < d.calibration_share.size(); ++k) {
-    EXPECT_GT(d.calibration_share[k], d.calibration_share[k - 1]);
-    EXPECT_GE(d.calibration_density[k], d.calibration_density[k - 1]);
-  }
+  EXPECT_EQ(d.calibration_density.back(), 1.0);
   std::printf(
       "%s: objective %.4g -> %.4g; density design %.2f %%, its stencil %.2f %% (flat %.2f %%)\n",
       GetParam().begin().key().c_str(), first.objective, best, d.density_rms_error, d.rms_error,
@@ -157,6 +160,9 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   j["design"]["smoothing"] = -1;
   EXPECT_NE(error_of(j).find("/design/smoothing"), std::string::npos);
   j["design"].erase("smoothing");
+  j["resin"]["bilayer"] = true;  // not placed by the adjoint yet
+  EXPECT_NE(error_of(j).find("/resin/bilayer"), std::string::npos);
+  j["resin"].erase("bilayer");
   EXPECT_EQ(parse_design(j).evaluations, 6);  // given
   j["design"].erase("evaluations");
   EXPECT_EQ(parse_design(j).evaluations, 80);  // the adjoint's default

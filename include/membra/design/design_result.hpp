@@ -2,6 +2,7 @@
 // What a design gives (docs/inverse_design.md): the best stencil, its simulated form and errors,
 // every iteration, and for the adjoint method its densities, their own form and the stencil
 // calibration.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -61,7 +62,7 @@ struct DesignResult {
   // why the optimiser stopped.
   std::string method;
   DensityField density;
-  double density_rms_error = 0.0;
+  double density_rms_error = std::numeric_limits<double>::quiet_NaN();  // NaN: no equilibrium
   Points density_form;             // the density design's released form (the stencil's triangles)
   ShapeError density_error;        // its distance to the target
   double unreachable_share = 0.0;  // of the cells: asking for a density outside [0, 1]

@@ -5,7 +5,7 @@
 // length. The membrane must have been impregnated everywhere first (so each element knows its
 // resin's stiffness and length at impregnation); the density then only sets the fractions.
 // Both rules are smooth in the fraction, so the released form is smooth in the density and its
-// gradient follows by the adjoint method (design/adjoint_gradient.hpp).
+// gradient follows by the adjoint method (design/density_problem.hpp, design/adjoint_solve.hpp).
 #include <vector>
 
 #include <Eigen/Core>

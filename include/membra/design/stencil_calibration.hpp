@@ -14,8 +14,9 @@
 namespace membra {
 
 struct StencilCalibration {
-  std::vector<double> share;                // area shares, increasing: 0, the sampled squares, 1
-  std::vector<double> density;              // the uniform density each releases like
+  std::vector<double> share;     // area shares, increasing: 0, the sampled squares, 1
+  std::vector<double> density;   // the uniform density each releases like (made monotone)
+  std::vector<double> measured;  // the sampled squares' densities as measured (no end points)
   double min_share = 0.0, max_share = 1.0;  // of the smallest and largest square that can be cut
   double density_of(double share) const;
   // The area share to lay out for density rho: the table inverted, rounded to what can be cut.

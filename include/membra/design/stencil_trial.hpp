@@ -31,8 +31,4 @@ StencilTrial try_stencil(const DesignSpec& spec, const TargetSurface& target,
 // Makes the trial the design's result: its scene, stencil, run, error and errors in %.
 void adopt_stencil(StencilTrial&& trial, DesignResult& r);
 
-// The scene that simulates `stencil` for a design: spec.scene with the stencil as its resin
-// (without the impregnate step when the stencil is empty).
-Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil);
-
 }  // namespace membra
