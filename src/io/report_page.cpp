@@ -378,7 +378,8 @@ ReportPage page_from_staged(const OutputSet& out, const std::string& title,
   // The pictures in the order a reader wants them: the form first, then the rest as staged
   // (branches/N/curvature.png among them); the frames are in the contact sheet.
   for (const char* p : {"curvature.png", "curvature_global.png", "stress.png", "comparison.png",
-                        "curvature_map.png", "contact_sheet.png", "pattern.png"})
+                        "comparison_density.png", "density.png", "curvature_map.png",
+                        "contact_sheet.png", "pattern.png"})
     if (!out.staged(p).empty()) page.pictures.push_back(p);
   for (const auto& name : out.names())
     if (name.starts_with("branches/") && name.ends_with(".png")) page.pictures.push_back(name);
