@@ -73,7 +73,7 @@ bool DensityProblem::release_from_frame(const Eigen::VectorXd& rho) {
 bool DensityProblem::solve(const Eigen::VectorXd& rho) {
   if (rho.size() != field_.value.size())
     throw std::invalid_argument("one density per cell of the design's field");
-  if (released_ && warm_start) {
+  if (released_) {
     if (anchor_.cols() == p_.membrane.state.x.cols()) {
       p_.membrane.state.x = anchor_;
       p_.membrane.state.v.setZero();

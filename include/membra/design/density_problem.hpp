@@ -53,12 +53,8 @@ class DensityProblem {
   // and a line search that steps back would not find the form it left. Anchored at the best
   // design so far, the form is a function of the densities along the branch through it.
   void anchor();
-  // false: every solve follows the release path from the stretched sheet, as the real stencil
-  // is released (slower; the form is then the process's, whatever came before).
-  bool warm_start = true;
   const Points& positions() const { return p_.membrane.state.x; }
   const Membrane& membrane() const { return p_.membrane; }
-  long newton_iterations() const { return iterations_; }
 
   DensityEvaluation evaluate(const Eigen::VectorXd& rho);
 
