@@ -36,7 +36,9 @@ std::vector<BenchRow> run_bench(const BenchOptions& o) {
     const auto solver = solver_from_name(name);
     if (!solver || (!solver_info(*solver).equilibrium && *solver != Solver::rk4)) {
       std::string known;
-      for (auto k : kBenchSolvers) known += (known.empty() ? "" : ", ") + std::string(k);
+      for (const SolverInfo& k : solver_table())
+        if (k.equilibrium || k.id == Solver::rk4)
+          known += (known.empty() ? "" : ", ") + std::string(k.name);
       throw std::invalid_argument("unknown solver '" + name + "' (known: " + known + ")");
     }
     solvers.push_back(*solver);

@@ -121,7 +121,7 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
                        FrameRecorder& recorder, SolveReport& total) {
   const double thickness = p.membrane.sheet.material.thickness;
   const int n = path.increments;
-  const bool newton = scene.simulation.solver == Solver::newton;
+  const bool newton = second_order(scene.simulation.solver);
   // Path positions in units of 1/8 of an increment, so that t = k/n exactly at the scene's
   // increments (the same rest lengths as a fixed-increment path).
   const int full = 8, units = full * n;

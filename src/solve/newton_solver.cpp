@@ -85,6 +85,7 @@ class Newton {
   bool factor_projected();
   bool negative_curvature(Eigen::VectorXd& v, double& curvature);
   bool indefinite_step();
+  bool continuation_step();
   bool exact_is_positive_definite();
   bool factorize(const Eigen::SparseMatrix<double>& a);
   bool line_search(const Eigen::VectorXd& d, double slope, double curvature);
@@ -107,7 +108,8 @@ class Newton {
   double length_ = 1.0;    // m, mean spring rest length: the scale of a saddle escape
   bool try_exact_ = true;  // the last steps suggest the Hessian is positive definite
   double last_alpha_ = 0.0;
-  Eigen::VectorXd nc_;  // the last direction of negative curvature (power iteration's start)
+  double ptc_shift_ = 1.0;  // continuation: 1/h^2, the implicit-Euler shift, units of diag|H|
+  Eigen::VectorXd nc_;      // the last direction of negative curvature (power iteration's start)
 };
 
 void Newton::evaluate() {
@@ -271,6 +273,48 @@ bool Newton::indefinite_step() {
   return false;
 }
 
+// Pseudo-transient continuation: one implicit-Euler step of the gradient flow in the
+// stiffness-diagonal metric, (H + diag|H| / h^2) dx = -g, taken in full. The shift grows (x4)
+// until the matrix factorizes and after a step that raises both the energy and the residual
+// (which is undone); otherwise h grows with the residual ratio (switched evolution relaxation,
+// shift x (r_new / r_old)^2), so the steps become Newton's near a minimum. Measured against
+// Newton in docs/performance.md: it loses, and stays as a benchmark candidate.
+bool Newton::continuation_step() {
+  exact_.assemble(x_, false);
+  double floor = 0.0;
+  const Eigen::VectorXd diag = shift_metric(exact_, floor);
+  double applied = 0.0;
+  bool factored = false;
+  for (int attempt = 0; attempt < 30 && !factored; ++attempt) {
+    if (attempt > 0) ptc_shift_ *= 4.0;
+    exact_.add_to_diagonal(((ptc_shift_ - applied) * diag).array() +
+                           (applied == 0.0 ? floor : 0.0));
+    applied = ptc_shift_;
+    factored = factorize(exact_.lower());
+  }
+  if (!factored) return false;
+  const Eigen::VectorXd d = llt_.solve(-gradient());
+  Points xt = moved(d, 1.0);
+  const double et = potential_energy(model_, xt);
+  Points ft;
+  compute_static_forces(model_, xt, ft);
+  ++r_.force_passes;
+  const double residual = max_free_force(model_, ft);
+  if (!std::isfinite(et) || !std::isfinite(residual) || (et > energy_ && residual >= r_.residual)) {
+    ptc_shift_ *= 4.0;  // too long a step: undone, a shorter one next
+    return true;
+  }
+  const double ratio = residual / r_.residual;
+  ptc_shift_ = std::clamp(ptc_shift_ * ratio * ratio, 1e-10, 1e12);
+  x_ = std::move(xt);
+  f_ = std::move(ft);
+  energy_ = et;
+  r_.residual = residual;
+  r_.residual_relative = residual / o_.force_scale;
+  last_alpha_ = 1.0;
+  return true;
+}
+
 void Newton::run(const Stopwatch& clock) {
   evaluate();
   bool exact_recent = false;  // the last step was a Newton step on a positive definite Hessian
@@ -303,6 +347,14 @@ void Newton::run(const Stopwatch& clock) {
     if (it >= o_.max_iterations || ndof_ == 0) return;
     if (o_.max_seconds > 0.0 && clock.seconds() > o_.max_seconds) return;
     ++r_.iterations;
+    if (o_.continuation) {
+      if (!continuation_step()) {
+        r_.message =
+            "ptc: the shifted Hessian did not factorize at iteration " + std::to_string(it);
+        return;
+      }
+      continue;
+    }
     exact_recent = try_exact_ && exact_step();
     if (exact_recent) continue;
     try_exact_ = false;
@@ -348,7 +400,8 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   state.x = gauged ? Points(gauge.rotation.transpose() * x) : x;
   state.v.setZero(3, n);
   r.wall_seconds = clock.seconds();
-  if (r.message.empty() || r.converged) r.message = summary_message("newton", r, o.tolerance);
+  if (r.message.empty() || r.converged)
+    r.message = summary_message(o.continuation ? "ptc" : "newton", r, o.tolerance);
   return r;
 }
 

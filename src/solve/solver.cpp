@@ -14,14 +14,16 @@ const std::vector<SolverInfo>& solver_table() {
   // (estimated from the element counts; docs/errors.md).
   static const std::vector<SolverInfo> table = {
       {Solver::static_fire, "static", true, true, 2.5e3,
-       "FIRE on stiffness-scaled masses (the default)"},
+       "FIRE on stiffness-scaled masses (the viewer's live relaxation; fastest on spring nets)"},
       {Solver::newton, "newton", true, true, 28e3,
-       "Newton on analytic Hessians with sparse Cholesky and saddle escapes (docs/solver.md)"},
+       "Newton on analytic Hessians with sparse Cholesky and saddle escapes (the default)"},
       {Solver::rk4, "rk4", false, true, 2.5e3, "the paper's Runge-Kutta 4, time step T"},
       {Solver::symplectic_euler, "symplectic_euler", false, true, 2.5e3,
        "semi-implicit Euler, time step T"},
       {Solver::dr_unit, "dr_unit", true, false, 2.5e3,
        "FIRE with one mass for all (plain dynamic relaxation, a benchmark baseline)"},
+      {Solver::ptc, "ptc", true, false, 28e3,
+       "pseudo-transient continuation on Newton's Hessians (a benchmark candidate, not kept)"},
   };
   return table;
 }
@@ -40,6 +42,10 @@ std::optional<Solver> solver_from_name(std::string_view name) {
   for (const SolverInfo& s : solver_table())
     if (s.name == name) return s.id;
   return std::nullopt;
+}
+
+bool second_order(Solver solver) {
+  return solver == Solver::newton || solver == Solver::ptc;
 }
 
 std::vector<std::string_view> solver_names(bool scenes_only) {
@@ -62,8 +68,10 @@ SolveReport solve_with(Solver solver, const Model& model, State& state, const So
       o.progress = in.progress;
       return solve_static(model, state, o);
     }
-    case Solver::newton: {
+    case Solver::newton:
+    case Solver::ptc: {
       NewtonOptions o;
+      o.continuation = solver == Solver::ptc;
       o.tolerance = in.tolerance;
       o.force_scale = in.force_scale;
       o.max_iterations = in.newton_iterations;

@@ -367,6 +367,10 @@ Scene ViewerSession::to_scene() const {
     s.simulation.gravity = params_.G;
     s.simulation.dt = params_.T;
     s.simulation.damping = params_.D;
+    // The live relaxation is FIRE whatever the scene names: a saved session names it, so that
+    // `membra run` takes the same path to the same form (docs/viewer.md).
+    if (mode_ == LiveMode::relax && s.simulation.is_static())
+      s.simulation.solver = Solver::static_fire;
     // A smaller T shortens the run's simulated time: keep it long enough for the scene's ramp.
     SimulationSpec& sim = s.simulation;
     if (sim.ramp_seconds > 0.0 && sim.ramp_seconds > static_cast<double>(sim.steps) * sim.dt)

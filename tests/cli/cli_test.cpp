@@ -272,7 +272,8 @@ TEST(CliBench, ScenesRunTheExamplesWithEachEquilibriumSolver) {
 TEST_F(Cli, AnUnconvergedRunExitsSevenWithAllOutputs) {
   const Output o = membra_cli("run " + std::string(MEMBRA_SOURCE_DIR) +
                               "/examples/anticlastic_hyperbola.json --out " + (dir / "o").string() +
-                              " --set 'sheet.resolution=[9,9]' --set simulation.max_iterations=20");
+                              " --set 'sheet.resolution=[9,9]' --set simulation.solver=static"
+                              " --set simulation.max_iterations=20");
   EXPECT_EQ(o.code, 7) << o.text;
   EXPECT_NE(o.text.find("not converged"), std::string::npos) << o.text;
   EXPECT_NE(o.text.find("increments"), std::string::npos) << o.text;  // what to try

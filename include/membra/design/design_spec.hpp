@@ -31,7 +31,7 @@ struct DesignSpec {
   double smoothing = 1e-4;     // adjoint: weight of the mean squared difference of neighbours
   int evaluations = 24;        // forward simulations (adjoint: forward + adjoint solves) at most
   double budget = 900.0;       // s of wall time at most
-  Solver solver = Solver::static_fire;
+  Solver solver = Solver::newton;
   double tolerance = 1e-6;
   int increments = 10;  // of the release path
   // The scene every stencil is simulated in: sheet, stretch, an impregnate step at index 1 (its

@@ -19,13 +19,13 @@ namespace membra {
 
 // How to simulate: the paper's K, G, T, D and the run length.
 struct SimulationSpec {
-  Solver solver = Solver::static_fire;  // solve/solver.hpp has the table
-  double gravity = 9.81;                // G, m/s^2, acting along -z
-  double dt = 1e-4;                     // T, s
-  double damping = 0.0;                 // D, 1/s (force -D m v on every particle)
-  long steps = 10000;                   // time steps of a dynamic solver
-  long max_iterations = 500000;         // iterations of the static solver
-  double tolerance = 1e-6;              // relative to k_stretch x grid spacing
+  Solver solver = Solver::newton;  // solve/solver.hpp has the table
+  double gravity = 9.81;           // G, m/s^2, acting along -z
+  double dt = 1e-4;                // T, s
+  double damping = 0.0;            // D, 1/s (force -D m v on every particle)
+  long steps = 10000;              // time steps of a dynamic solver
+  long max_iterations = 500000;    // iterations of the static solver
+  double tolerance = 1e-6;         // relative to k_stretch x grid spacing
   // Tolerance of the intermediate increments of a path (release, grow, ...); the last increment
   // is solved to `tolerance`. Defaults to `tolerance` and is never tighter. Looser values save the
   // slow tails of the intermediate solves (2-3x) but can move the sheet onto another branch

@@ -27,6 +27,9 @@ struct NewtonOptions {
   // Plane stress: every z coordinate held (for a sheet lying in the xy plane), so a compressed
   // region cannot buckle; the in-plane stress problems of the tests and the measures use it.
   bool in_plane = false;
+  // Pseudo-transient continuation instead of line-searched Newton steps away from a minimum
+  // (the solver "ptc"; measured against Newton in docs/performance.md).
+  bool continuation = false;
   std::function<void(const Progress&)> progress;
 };
 

@@ -18,6 +18,7 @@ enum class Solver {
   static_fire,       // "static": FIRE on stiffness-scaled masses (static_solver.hpp)
   dr_unit,           // "dr_unit": the same with one mass for all (plain dynamic relaxation)
   newton,            // "newton": shifted Newton with sparse Cholesky (newton_solver.hpp)
+  ptc,               // "ptc": pseudo-transient continuation on the same Hessians
   rk4,               // "rk4": the paper's Runge-Kutta 4 time stepping (dynamics.hpp)
   symplectic_euler,  // "symplectic_euler": semi-implicit Euler time stepping
 };
@@ -38,6 +39,8 @@ std::string_view solver_name(Solver solver);
 // The solver called `name` (scene and bench names), or nothing.
 std::optional<Solver> solver_from_name(std::string_view name);
 // Names of the solvers a scene may choose (in_scenes), or of all of them.
+// Newton and ptc: factorize Hessians, follow paths with a predictor and adaptive increments.
+bool second_order(Solver solver);
 std::vector<std::string_view> solver_names(bool scenes_only = true);
 
 // Everything any solver reads; each takes what applies to it.
