@@ -1,5 +1,5 @@
-// Slow acceptance tests (label "slow"; on the 2-core machine 8-13 and 3-7 minutes, which
-// scripts/test runs side by side): the default static solver converges on exp3 at 64 x 64 with
+// Slow acceptance tests (label "slow"; on the 2-core machine several minutes each, which
+// scripts/test runs side by side): the examples' solver (newton) converges on exp3 at 64 x 64 with
 // a resin/latex stiffness ratio of 2000; exp2 and exp3 as shipped (41 x 41, the grid exp2's
 // creases need) give local folds and global curvature.
 // Run alone with: ctest --test-dir build -L slow
