@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "membra/io/calibration_store.hpp"
 #include "membra/io/design_files.hpp"
 #include "membra/io/design_reader.hpp"
 #include "membra/io/output_set.hpp"
@@ -11,7 +12,9 @@
 namespace membra::cli {
 
 int cmd_design(const DesignArgs& args) {
-  const DesignSpec spec = load_design(args.file);
+  DesignSpec spec = load_design(args.file);
+  if (const auto dir = default_cache_dir(); !args.no_cache && !dir.empty())
+    spec.calibration_cache = calibration_store(dir);
   const std::string dir = args.out_dir.empty() ? "out/" + spec.name : args.out_dir;
   OutputSet out(dir);
   if (!args.quiet)

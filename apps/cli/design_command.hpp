@@ -8,6 +8,7 @@ struct DesignArgs {
   std::string file;
   std::string out_dir;  // default out/<name>
   bool quiet = false;
+  bool no_cache = false;  // measure the stencil calibration even if a stored one fits
 };
 
 // Returns the exit code: 0, or 5 when the target cannot be reached (the best attempt is still

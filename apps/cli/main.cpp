@@ -208,6 +208,9 @@ CLI::App* add_design(CLI::App& app, Args& a) {
   target->add_option("file", a.design.file, "Design file (JSON)")->required();
   target->add_option("--out,-o", a.design.out_dir, "Output directory (default: out/<name>)");
   target->add_flag("--quiet,-q", a.design.quiet, "No progress or summary");
+  target->add_flag("--no-cache", a.design.no_cache,
+                   "Measure the adjoint method's stencil calibration even if one is stored "
+                   "($MEMBRA_CACHE_DIR, else ~/.cache/membra; MEMBRA_CACHE_DIR=off: none)");
   return design;
 }
 

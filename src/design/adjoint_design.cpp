@@ -73,6 +73,7 @@ void lay_out_and_simulate(const DesignSpec& spec, DesignResult& r,
   const StencilCalibration calibration = calibrate_stencil(spec);
   r.calibration_share = calibration.share;
   r.calibration_density = calibration.density;
+  r.calibration_cached = calibration.cached;
   StencilTrial t = try_stencil(
       spec, target, [&](const Vec2& p) { return calibration.share_for(r.density.at(p)); });
   DesignIteration s;

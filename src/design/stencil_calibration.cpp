@@ -41,22 +41,10 @@ AreaCurve area_curve(const DesignSpec& spec, const Scene& scene) {
   return c;
 }
 
-}  // namespace
-
-double StencilCalibration::density_of(double a) const {
-  return interpolate(share, density, a);
-}
-
-double StencilCalibration::share_for(double rho) const {
-  const double a = interpolate(density, share, rho);
-  if (a < min_share) return a < 0.5 * min_share ? 0.0 : min_share;
-  if (a > max_share) return a < 0.5 * (max_share + 1.0) ? max_share : 1.0;
-  return a;
-}
-
-StencilCalibration calibrate_stencil(const DesignSpec& spec, int samples,
-                                     const std::function<void(double, double)>& progress) {
-  if (samples < 2) throw std::invalid_argument("the calibration needs two samples at least");
+// The calibration as membra measures it: the uniform density's area curve, then each sample
+// square's uniform stencil released and read off that curve.
+StencilCalibration measure_calibration(const DesignSpec& spec, int samples,
+                                       const std::function<void(double, double)>& progress) {
   Scene scene = spec.scene;
   scene.simulation.solver = Solver::newton;
   const AreaCurve curve = area_curve(spec, scene);
@@ -88,6 +76,33 @@ StencilCalibration calibrate_stencil(const DesignSpec& spec, int samples,
   }
   c.share.push_back(1.0);
   c.density.push_back(1.0);
+  return c;
+}
+
+}  // namespace
+
+double StencilCalibration::density_of(double a) const {
+  return interpolate(share, density, a);
+}
+
+double StencilCalibration::share_for(double rho) const {
+  const double a = interpolate(density, share, rho);
+  if (a < min_share) return a < 0.5 * min_share ? 0.0 : min_share;
+  if (a > max_share) return a < 0.5 * (max_share + 1.0) ? max_share : 1.0;
+  return a;
+}
+
+StencilCalibration calibrate_stencil(const DesignSpec& spec, int samples,
+                                     const std::function<void(double, double)>& progress) {
+  if (samples < 2) throw std::invalid_argument("the calibration needs two samples at least");
+  const CalibrationCache* cache = spec.calibration_cache.get();
+  if (cache && cache->load)
+    if (std::optional<StencilCalibration> stored = cache->load(spec, samples)) {
+      stored->cached = true;
+      return *stored;
+    }
+  StencilCalibration c = measure_calibration(spec, samples, progress);
+  if (cache && cache->store) cache->store(spec, samples, c);
   return c;
 }
 

@@ -48,7 +48,9 @@ void add_adjoint(const DesignResult& d, nlohmann::json& a) {
   a["reach"] = {{"unreachable_share", d.unreachable_share},
                 {"asks_min", d.asks_min},
                 {"asks_max", d.asks_max}};
-  a["calibration"] = {{"share", d.calibration_share}, {"density", d.calibration_density}};
+  a["calibration"] = {{"share", d.calibration_share},
+                      {"density", d.calibration_density},
+                      {"cached", d.calibration_cached}};
   a["density"] = {{"cells", {d.density.nx, d.density.ny}},
                   {"cell_mm", d.density.cell_size().x() / units::mm},
                   {"values", std::vector<double>(d.density.value.data(),

@@ -4,7 +4,10 @@
 
 #include <cstdio>
 
+#include <filesystem>
+
 #include "membra/design/stencil_calibration.hpp"
+#include "membra/io/calibration_store.hpp"
 #include "membra/io/design_reader.hpp"
 
 namespace membra {
@@ -13,13 +16,26 @@ namespace {
 // 200 mm frame stretched 1.5 x 1.5, a 17 x 17 sheet, 20 mm cells, 4 mm minimum feature: squares
 // from 4 to 16 mm a side, area shares from 0.04 to 0.64.
 TEST(StencilCalibration, ASquaresShareActsAsAboutItsAreaInDensity) {
-  const DesignSpec spec = parse_design({{"name", "calibration"},
-                                        {"target", {{"saddle", {{"size", 150}, {"height", 15}}}}},
-                                        {"frame", {{"size", 200}, {"lambda", {1.5, 1.5}}}},
-                                        {"sheet", {{"resolution", 17}}},
-                                        {"resin", {{"min_feature", 4}, {"cell", 20}}},
-                                        {"design", {{"solver", "newton"}}}});
+  DesignSpec spec = parse_design({{"name", "calibration"},
+                                  {"target", {{"saddle", {{"size", 150}, {"height", 15}}}}},
+                                  {"frame", {{"size", 200}, {"lambda", {1.5, 1.5}}}},
+                                  {"sheet", {{"resolution", 17}}},
+                                  {"resin", {{"min_feature", 4}, {"cell", 20}}},
+                                  {"design", {{"solver", "newton"}}}});
+  const auto cache_dir =
+      std::filesystem::temp_directory_path() /
+      ("membra_calibration_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  std::filesystem::remove_all(cache_dir);
+  spec.calibration_cache = calibration_store(cache_dir);
   const StencilCalibration c = calibrate_stencil(spec);
+  EXPECT_FALSE(c.cached);  // measured, and stored
+  // A second design on the same sheet reads it back instead of measuring it again.
+  const StencilCalibration again = calibrate_stencil(spec);
+  EXPECT_TRUE(again.cached);
+  EXPECT_EQ(again.share, c.share);
+  EXPECT_EQ(again.density, c.density);
+  EXPECT_EQ(again.measured, c.measured);
+  std::filesystem::remove_all(cache_dir);
   ASSERT_EQ(c.share.size(), 6u);  // (0, 0), four squares, (1, 1)
   EXPECT_NEAR(c.min_share, 0.04, 1e-8);
   EXPECT_NEAR(c.max_share, 0.64, 1e-8);

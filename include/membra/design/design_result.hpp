@@ -70,6 +70,7 @@ struct DesignResult {
   std::string stopped;
   // adjoint: the stencil calibration (area share of a cell's square -> the density it acts as).
   std::vector<double> calibration_share, calibration_density;
+  bool calibration_cached = false;  // read from the calibration cache, not measured this run
 };
 
 }  // namespace membra

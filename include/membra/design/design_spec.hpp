@@ -3,6 +3,7 @@
 // the frame and its pre-stretch, the sheet, the resin and its stencil's limits, the method and
 // its budget, and the scene every stencil is simulated in. Read by io/design_reader.hpp.
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "membra/design/stencil_layout.hpp"
@@ -11,6 +12,8 @@
 #include "membra/solve/solver.hpp"
 
 namespace membra {
+
+struct CalibrationCache;  // design/stencil_calibration.hpp
 
 struct DesignSpec {
   std::filesystem::path file;
@@ -37,6 +40,9 @@ struct DesignSpec {
   // The scene every stencil is simulated in: sheet, stretch, an impregnate step at index 1 (its
   // resin, face and bilayer; the pattern is the stencil's) and release. Made by the reader.
   Scene scene;
+  // Where the adjoint method keeps stencil calibrations between designs (none: measured every
+  // time). `membra design` sets one on disk (io/calibration_store.hpp).
+  std::shared_ptr<const CalibrationCache> calibration_cache;
 };
 
 }  // namespace membra
