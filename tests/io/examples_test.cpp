@@ -20,10 +20,13 @@ RunResult run_example(const std::string& name, std::vector<std::string> sets) {
 TEST(Examples, ParallelStripsCurveTheWholeSheetPerpendicularStripsDoNot) {
   // exp3 as shipped; exp2 held across at full width (no narrowing), so nothing along its strips
   // is mismatched and it must stay flat. exp2 as shipped (narrowed, creased) needs 41 x 41 to
-  // resolve its creases: tests/slow/exp3_64_test.cpp compares the two there.
+  // resolve its creases: tests/slow/exp3_64_test.cpp compares the two there. The flat one with
+  // the static solver: a sheet held at the edge of buckling is Newton's slowest case (1 189
+  // iterations, 23 s, against FIRE's 3 s; docs/solver.md), and the test is about the form.
   const std::vector<std::string> coarse = {"sheet.resolution=[21,21]"};
-  const RunResult perpendicular = run_example(
-      "exp2_perpendicular.json", {"sheet.resolution=[21,21]", "protocol.0.lambda=[1.5,1]"});
+  const RunResult perpendicular =
+      run_example("exp2_perpendicular.json", {"sheet.resolution=[21,21]",
+                                              "protocol.0.lambda=[1.5,1]", "simulation.solver=static"});
   const RunResult parallel = run_example("exp3_parallel.json", coarse);
   ASSERT_TRUE(perpendicular.solve.converged) << perpendicular.solve.message;
   ASSERT_TRUE(parallel.solve.converged) << parallel.solve.message;
