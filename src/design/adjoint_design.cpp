@@ -113,11 +113,13 @@ void design_by_adjoint(const DesignSpec& spec, DesignResult& r,
   const Box2 frame{Vec2::Zero(), Vec2(spec.frame, spec.frame)};
   DensityProblem problem(scene, make_density_field(frame, spec.density_cell, 0.5));
   const TargetSurface& target = r.target;
+  const Flattening flat =
+      spec.flattening == "projection" ? Flattening::projection : Flattening::conformal;
   problem.set_target(
-      target_correspondence(target, problem.frame_positions(), problem.area_weights()),
+      target_correspondence(target, problem.frame_positions(), problem.area_weights(), flat),
       target.diameter, spec.smoothing);
   const MetricStart start =
-      metric_start(target, problem.frame_positions(), problem.field(), spec.lambda);
+      metric_start(target, problem.frame_positions(), problem.field(), spec.lambda, flat);
   note_reach(start, r);
 
   DensityOptimizerOptions o;

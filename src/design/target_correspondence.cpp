@@ -3,35 +3,92 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+
+#include "membra/design/conformal_flattening.hpp"
 
 namespace membra {
 namespace {
 
-// The sheet's centre and the scale from frame to footprint.
+// The sheet's centre and extent on the frame (its particles').
 struct Placement {
   Vec2 centre;
-  double scale;
+  double extent;
 };
-Placement placement(const TargetSurface& target, const Points& frame_x) {
+Placement placement(const Points& frame_x) {
   const Vec3 lo = frame_x.rowwise().minCoeff(), hi = frame_x.rowwise().maxCoeff();
-  const double extent = std::max(hi.x() - lo.x(), hi.y() - lo.y());
-  return {0.5 * (lo + hi).head<2>(), target.diameter / extent};
+  return {0.5 * (lo + hi).head<2>(), std::max(hi.x() - lo.x(), hi.y() - lo.y())};
 }
+
+// Barycentric coordinates of p in the plane triangle (a, b, c); nothing if it is degenerate.
+std::optional<Vec3> barycentric(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& p) {
+  const double det = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+  if (!(std::abs(det) > 0.0)) return std::nullopt;
+  const Vec2 d = p - a;
+  const double u = (d.x() * (c - a).y() - d.y() * (c - a).x()) / det;
+  const double v = ((b - a).x() * d.y() - (b - a).y() * d.x()) / det;
+  return Vec3(1.0 - u - v, u, v);
+}
+
+// Frame point -> target point, by either flattening.
+class TargetMap {
+ public:
+  TargetMap(const TargetSurface& target, const Points& frame_x, Flattening flattening)
+      : target_(target), flattening_(flattening), sheet_(placement(frame_x)) {
+    if (flattening_ == Flattening::projection) {
+      scale_ = target.diameter / sheet_.extent;
+      return;
+    }
+    uv_ = conformal_flattening(target.x, target.triangles);
+    const Vec2 lo = uv_.rowwise().minCoeff(), hi = uv_.rowwise().maxCoeff();
+    uv_centre_ = 0.5 * (lo + hi);
+    scale_ = std::max(hi.x() - lo.x(), hi.y() - lo.y()) / sheet_.extent;
+  }
+
+  Vec3 operator()(const Vec2& frame_point) const {
+    const Vec2 p = scale_ * (frame_point - sheet_.centre);
+    if (flattening_ == Flattening::projection) return Vec3(p.x(), p.y(), target_height(target_, p));
+    return on_surface(p + uv_centre_);
+  }
+  double scale() const { return scale_; }
+
+ private:
+  // The surface point whose flat image is q: by the barycentric coordinates of the triangle that
+  // holds q, or beyond the flattening's edge, of the nearest one's (extended linearly).
+  Vec3 on_surface(const Vec2& q) const {
+    double best = std::numeric_limits<double>::infinity();
+    Vec3 w_best = Vec3(1.0, 0.0, 0.0);
+    const Triangle* t_best = &target_.triangles.front();
+    for (const Triangle& t : target_.triangles) {
+      const auto w = barycentric(uv_.col(t[0]), uv_.col(t[1]), uv_.col(t[2]), q);
+      if (!w) continue;
+      const double outside = std::max(0.0, -w->minCoeff());  // 0 inside
+      if (outside < best) best = outside, w_best = *w, t_best = &t;
+      if (outside == 0.0) break;
+    }
+    const Triangle& t = *t_best;
+    return w_best[0] * target_.x.col(t[0]) + w_best[1] * target_.x.col(t[1]) +
+           w_best[2] * target_.x.col(t[2]);
+  }
+
+  const TargetSurface& target_;
+  Flattening flattening_;
+  Placement sheet_;
+  double scale_ = 1.0;
+  Eigen::Matrix2Xd uv_;
+  Vec2 uv_centre_ = Vec2::Zero();
+};
 
 }  // namespace
 
 double target_height(const TargetSurface& target, const Vec2& p) {
   const Points& x = target.x;
   for (const Triangle& t : target.triangles) {
-    const Vec2 a = x.col(t[0]).head<2>(), b = x.col(t[1]).head<2>(), c = x.col(t[2]).head<2>();
-    const double det = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
-    if (std::abs(det) <= 0.0) continue;
-    const Vec2 d = p - a;
-    const double u = (d.x() * (c - a).y() - d.y() * (c - a).x()) / det;
-    const double v = ((b - a).x() * d.y() - (b - a).y() * d.x()) / det;
+    const auto w =
+        barycentric(x.col(t[0]).head<2>(), x.col(t[1]).head<2>(), x.col(t[2]).head<2>(), p);
     constexpr double eps = 1e-9;
-    if (u < -eps || v < -eps || u + v > 1.0 + eps) continue;
-    return (1.0 - u - v) * x(2, t[0]) + u * x(2, t[1]) + v * x(2, t[2]);
+    if (!w || w->minCoeff() < -eps) continue;
+    return (*w)[0] * x(2, t[0]) + (*w)[1] * x(2, t[1]) + (*w)[2] * x(2, t[2]);
   }
   Eigen::Index nearest = 0;
   (x.topRows<2>().colwise() - p).colwise().squaredNorm().minCoeff(&nearest);
@@ -39,38 +96,32 @@ double target_height(const TargetSurface& target, const Vec2& p) {
 }
 
 Correspondence target_correspondence(const TargetSurface& target, const Points& frame_x,
-                                     const Eigen::VectorXd& weights) {
-  const Placement pl = placement(target, frame_x);
+                                     const Eigen::VectorXd& weights, Flattening flattening) {
+  const TargetMap map(target, frame_x, flattening);
   Correspondence c{Points(3, frame_x.cols()), weights};
-  for (Eigen::Index i = 0; i < frame_x.cols(); ++i) {
-    const Vec2 u = pl.scale * (frame_x.col(i).head<2>() - pl.centre);
-    c.target.col(i) = Vec3(u.x(), u.y(), target_height(target, u));
-  }
+  for (Eigen::Index i = 0; i < frame_x.cols(); ++i) c.target.col(i) = map(frame_x.col(i).head<2>());
   return c;
 }
 
 MetricStart metric_start(const TargetSurface& target, const Points& frame_x,
-                         const DensityField& field, const Vec2& lambda) {
-  const Placement pl = placement(target, frame_x);
+                         const DensityField& field, const Vec2& lambda, Flattening flattening) {
+  const TargetMap map(target, frame_x, flattening);
   MetricStart m;
   m.density.resize(field.value.size());
   m.asks_min = std::numeric_limits<double>::infinity();
   m.asks_max = -m.asks_min;
-  const double h = 0.25 * field.cell_size().minCoeff() * pl.scale;  // slope by differences
+  const double h = 0.25 * field.cell_size().minCoeff();  // stretch by central differences
   int unreachable = 0;
   for (int k = 0; k < static_cast<int>(field.value.size()); ++k) {
-    const Vec2 u = pl.scale * (field.centre(k) - pl.centre);
-    const double hx =
-        (target_height(target, u + Vec2(h, 0)) - target_height(target, u - Vec2(h, 0))) / (2 * h);
-    const double hy =
-        (target_height(target, u + Vec2(0, h)) - target_height(target, u - Vec2(0, h))) / (2 * h);
-    // Shrink s sqrt(1 + slope^2) = (1 - rho) / lambda + rho along each stretched direction.
+    const Vec2 p = field.centre(k);
+    // Shrink |dX/dP| = (1 - rho) / lambda + rho along each stretched direction.
     double sum = 0.0;
     int directions = 0;
     for (int d = 0; d < 2; ++d) {
       const double l = lambda[d];
       if (!(l > 1.0)) continue;
-      const double shrink = pl.scale * std::sqrt(1.0 + (d == 0 ? hx * hx : hy * hy));
+      const Vec2 step = h * Vec2::Unit(d);
+      const double shrink = (map(p + step) - map(p - step)).norm() / (2.0 * h);
       sum += (shrink - 1.0 / l) / (1.0 - 1.0 / l);
       ++directions;
     }

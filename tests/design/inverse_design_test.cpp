@@ -160,6 +160,9 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   j["design"]["smoothing"] = -1;
   EXPECT_NE(error_of(j).find("/design/smoothing"), std::string::npos);
   j["design"].erase("smoothing");
+  j["design"]["flattening"] = "lscm";  // conformal or projection
+  EXPECT_NE(error_of(j).find("/design/flattening"), std::string::npos);
+  j["design"].erase("flattening");
   j["resin"]["bilayer"] = true;  // not placed by the adjoint yet
   EXPECT_NE(error_of(j).find("/resin/bilayer"), std::string::npos);
   j["resin"].erase("bilayer");

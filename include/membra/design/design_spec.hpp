@@ -32,8 +32,11 @@ struct DesignSpec {
   std::string method = "pattern_search";
   double density_cell = 0.01;  // m, adjoint: the design variables' cells
   double smoothing = 1e-4;     // adjoint: weight of the mean squared difference of neighbours
-  int evaluations = 24;        // forward simulations (adjoint: forward + adjoint solves) at most
-  double budget = 900.0;       // s of wall time at most
+  // adjoint, stage 1: how the target is laid over the frame, "conformal" (its conformal
+  // flattening) or "projection" (straight down onto its footprint); target_correspondence.hpp.
+  std::string flattening = "conformal";
+  int evaluations = 24;   // forward simulations (adjoint: forward + adjoint solves) at most
+  double budget = 900.0;  // s of wall time at most
   Solver solver = Solver::newton;
   double tolerance = 1e-6;
   int increments = 10;  // of the release path
