@@ -35,7 +35,7 @@ class DesignResult:
         return f"<membra.DesignResult rms {self.rms_error:.2f} % (flat {self.flat_error:.2f} %)>"
 
 
-def design(target, out=None, progress=None, base_dir=None):
+def design(target, out=None, progress=None, base_dir=None, cache=True):
     """Searches the stencil whose released form is closest to a target (membra design target).
 
     target: a design file path, or its content as a dict (docs/inverse_design.md).
@@ -44,13 +44,16 @@ def design(target, out=None, progress=None, base_dir=None):
         "rms_error", "max_error", "resin_share", "pieces", "seconds", "best", "note",
         "objective", "gradient_norm"}; with "method": "adjoint" the density iterates have stage
         "density" (rms_error: to the particles' own target points) and the stencil "stencil".
+    cache: keep the adjoint method's stencil calibration in $MEMBRA_CACHE_DIR (else
+        ~/.cache/membra) and read it back for later designs on the same sheet, as
+        `membra design` does; False measures it every time.
     Raises membra.SceneError naming the field at fault in the design file.
     """
     if isinstance(target, dict):
         spec = _membra.parse_design(json.dumps(target), str(base_dir or os.getcwd()))
     else:
         spec = _membra.load_design(str(target))
-    result = DesignResult(_membra.design(spec, progress))
+    result = DesignResult(_membra.design(spec, progress, cache))
     if out is not None:
         result.write(out)
     return result

@@ -10,6 +10,7 @@
 #include "conversions.hpp"
 #include "membra/core/input_error.hpp"
 #include "membra/design/inverse_design.hpp"
+#include "membra/io/calibration_store.hpp"
 #include "membra/io/design_files.hpp"
 #include "membra/io/design_reader.hpp"
 #include "membra/render/design_outputs.hpp"
@@ -38,11 +39,16 @@ py::dict iteration_dict(const DesignIteration& it) {
   return d;
 }
 
-std::shared_ptr<DesignResult> design(const DesignPtr& spec, const py::object& progress) {
+// `cache`: keep and reuse stencil calibrations in the default cache directory, as the CLI does.
+std::shared_ptr<DesignResult> design(const DesignPtr& spec, const py::object& progress,
+                                     bool cache) {
   const auto on_iteration = python_callback<DesignIteration>(progress, iteration_dict);
   auto r = std::make_shared<DesignResult>();
+  DesignSpec run = *spec;
+  if (const auto dir = default_cache_dir(); cache && !dir.empty())
+    run.calibration_cache = calibration_store(dir);
   py::gil_scoped_release nogil;
-  *r = run_design(*spec, on_iteration);
+  *r = run_design(run, on_iteration);
   return r;
 }
 
@@ -98,7 +104,7 @@ void bind_design(py::module_& m) {
       },
       py::arg("text"), py::arg("base_dir"));
   bind_design_result(m);
-  m.def("design", &design, py::arg("spec"), py::arg("progress"));
+  m.def("design", &design, py::arg("spec"), py::arg("progress"), py::arg("cache") = true);
 }
 
 }  // namespace membra::python

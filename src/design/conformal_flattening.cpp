@@ -18,6 +18,25 @@ std::pair<int, int> pins(const Points& x) {
   return {static_cast<int>(lo), static_cast<int>(hi)};
 }
 
+// The unknowns: u_k, v_k of every vertex but the two pinned ones (their columns; -1 when pinned),
+// and the pinned vertices' values.
+struct Unknowns {
+  std::vector<int> col;
+  Eigen::VectorXd pinned;
+  int free = 0;
+};
+Unknowns unknowns(const Points& x) {
+  const int n = static_cast<int>(x.cols());
+  const auto [a, b] = pins(x);
+  Unknowns u;
+  u.col.resize(2 * static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < 2; ++c) u.col[2 * k + c] = (k == a || k == b) ? -1 : u.free++;
+  u.pinned = Eigen::VectorXd::Zero(2 * n);
+  for (int k : {a, b}) u.pinned.segment<2>(2 * k) = x.col(k).head<2>();
+  return u;
+}
+
 }  // namespace
 
 // Per triangle, in an orthonormal frame of its own plane (corners q0, q1, q2), the residual of
@@ -27,14 +46,7 @@ std::pair<int, int> pins(const Points& x) {
 Eigen::Matrix2Xd conformal_flattening(const Points& x, const std::vector<Triangle>& triangles) {
   if (triangles.empty()) throw std::invalid_argument("the mesh has no faces to flatten");
   const int n = static_cast<int>(x.cols());
-  const auto [a, b] = pins(x);
-  // Column of each coordinate (u_k: 2k, v_k: 2k + 1) among the unknowns; pinned ones: -1.
-  std::vector<int> col(2 * static_cast<size_t>(n));
-  int free = 0;
-  for (int k = 0; k < n; ++k)
-    for (int c = 0; c < 2; ++c) col[2 * k + c] = (k == a || k == b) ? -1 : free++;
-  Eigen::VectorXd pinned = Eigen::VectorXd::Zero(2 * n);
-  for (int k : {a, b}) pinned.segment<2>(2 * k) = x.col(k).head<2>();
+  const auto [col, pinned, free] = unknowns(x);
   std::vector<Eigen::Triplet<double>> entries;
   std::vector<double> rhs;
   int row = 0;

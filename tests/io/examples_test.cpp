@@ -24,9 +24,9 @@ TEST(Examples, ParallelStripsCurveTheWholeSheetPerpendicularStripsDoNot) {
   // the static solver: a sheet held at the edge of buckling is Newton's slowest case (1 189
   // iterations, 23 s, against FIRE's 3 s; docs/solver.md), and the test is about the form.
   const std::vector<std::string> coarse = {"sheet.resolution=[21,21]"};
-  const RunResult perpendicular =
-      run_example("exp2_perpendicular.json", {"sheet.resolution=[21,21]",
-                                              "protocol.0.lambda=[1.5,1]", "simulation.solver=static"});
+  const RunResult perpendicular = run_example(
+      "exp2_perpendicular.json",
+      {"sheet.resolution=[21,21]", "protocol.0.lambda=[1.5,1]", "simulation.solver=static"});
   const RunResult parallel = run_example("exp3_parallel.json", coarse);
   ASSERT_TRUE(perpendicular.solve.converged) << perpendicular.solve.message;
   ASSERT_TRUE(parallel.solve.converged) << parallel.solve.message;

@@ -28,3 +28,17 @@ def test_design_matches_the_cli(root, cli, cli_env, tmp_path):
     # The designed scene reproduces the form through membra.run.
     again = membra.run(membra.Scene(d.scene, base_dir=tmp_path))
     assert (again.positions == d.positions).all()
+
+
+def test_an_adjoint_design_keeps_its_calibration_for_the_next(root, tmp_path, monkeypatch):
+    monkeypatch.setenv("MEMBRA_CACHE_DIR", str(tmp_path / "cache"))
+    spec = tiny_design(root)
+    spec["design"].update({"method": "adjoint", "density_cell": 25, "evaluations": 4})
+    first = membra.design(spec)
+    assert first.report["design"]["calibration"]["cached"] is False
+    assert len(list((tmp_path / "cache").glob("calibration-*.json"))) == 1
+    second = membra.design(spec)
+    assert second.report["design"]["calibration"]["cached"] is True
+    assert second.report["design"]["calibration"]["density"] == \
+        first.report["design"]["calibration"]["density"]
+    assert membra.design(spec, cache=False).report["design"]["calibration"]["cached"] is False
