@@ -278,7 +278,7 @@ bool Newton::indefinite_step() {
 // until the matrix factorizes and after a step that raises both the energy and the residual
 // (which is undone); otherwise h grows with the residual ratio (switched evolution relaxation,
 // shift x (r_new / r_old)^2), so the steps become Newton's near a minimum. Measured against
-// Newton in docs/performance.md: it loses, and stays as a benchmark candidate.
+// Newton in docs/solver.md: it loses, and stays as a benchmark candidate.
 bool Newton::continuation_step() {
   exact_.assemble(x_, false);
   double floor = 0.0;
