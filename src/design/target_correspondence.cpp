@@ -50,7 +50,6 @@ class TargetMap {
     if (flattening_ == Flattening::projection) return Vec3(p.x(), p.y(), target_height(target_, p));
     return on_surface(p + uv_centre_);
   }
-  double scale() const { return scale_; }
 
  private:
   // The surface point whose flat image is q: by the barycentric coordinates of the triangle that
