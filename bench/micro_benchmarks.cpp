@@ -7,6 +7,9 @@
 #include <cmath>
 #include <vector>
 
+#include <omp.h>
+#include <Eigen/CholmodSupport>
+
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/benchmark_problem.hpp"
@@ -113,6 +116,41 @@ void BM_HessianAssembly(benchmark::State& state) {
   set_per_item(state, s.model.num_particles());  // ns per particle
 }
 BENCHMARK(BM_HessianAssembly)->Args({64, 0})->Args({64, 1})->Unit(benchmark::kMillisecond);
+
+// One numeric factorization of that Hessian (made positive definite by a shift of its
+// diagonal) by CHOLMOD's supernodal Cholesky, as Newton factorizes every iteration, with the
+// fill-reducing ordering chosen by CHOLMOD's default strategy (arg 1 = 0), AMD alone (1), METIS
+// (2) or CHOLMOD's nested dissection (3); the symbolic analysis is done once, outside the loop.
+void BM_Factorization(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const auto s = membra::build_sheet({0.2, 0.2, n, n}, membra::SheetOptions{});
+  membra::Points x = s.model.reference;
+  for (Eigen::Index p = 0; p < x.cols(); ++p)
+    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+  std::vector<int> dof(static_cast<size_t>(x.size()));
+  for (size_t k = 0; k < dof.size(); ++k) dof[k] = static_cast<int>(k);
+  membra::HessianAssembler a(s.model, dof, static_cast<int>(dof.size()));
+  a.assemble(x, true);
+  const Eigen::VectorXd diag = a.diagonal().cwiseAbs();
+  const Eigen::SparseMatrix<double>& h = a.add_to_diagonal(1e-6 * diag);
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
+  llt.cholmod().print = 0;
+  const int orderings[] = {-1, CHOLMOD_AMD, CHOLMOD_METIS, CHOLMOD_NESDIS};
+  if (const int o = orderings[state.range(1)]; o >= 0) {
+    llt.cholmod().nmethods = 1;
+    llt.cholmod().method[0].ordering = o;
+  }
+  llt.analyzePattern(h);
+  omp_set_max_active_levels(0);  // as Newton factorizes: CHOLMOD's fixed 4 threads stay off
+  for (auto _ : state) {
+    llt.factorize(h);
+    if (llt.info() != Eigen::Success) state.SkipWithError("not positive definite");
+  }
+  state.counters["nnz_L_per_particle"] =
+      static_cast<double>(llt.cholmod().lnz) / static_cast<double>(s.model.num_particles());
+  set_per_item(state, s.model.num_particles());  // ns per particle
+}
+BENCHMARK(BM_Factorization)->ArgsProduct({{64, 128}, {0, 1, 2, 3}})->Unit(benchmark::kMillisecond);
 
 void BM_StressTensor(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));

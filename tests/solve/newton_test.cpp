@@ -1,5 +1,5 @@
 // The Newton solver: its Hessian, its gauge in every orientation, quadratic convergence near a
-// minimum, and the escape from a saddle.
+// minimum, the escape from a saddle, and the continuation variant (ptc).
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -163,6 +163,65 @@ TEST(Newton, EscapesTheSaddleOfACompressedFlatSheet) {
   const double rise = m.state.x.row(2).cwiseAbs().maxCoeff();
   EXPECT_GT(rise, 0.05 * 0.045);  // buckled: several mm on a 45 mm frame
   EXPECT_TRUE(check_stability(m.sheet.model, m.state.x, k).stable);
+}
+
+// Pseudo-transient continuation (the bench-only solver "ptc", NewtonOptions::continuation)
+// follows the same energy downhill by implicit-Euler steps: on the square of the biaxial
+// agreement test it must end in Newton's buckled minimum (energy within 1e-6 relative, positions
+// within 1e-4 of the size up to a rigid motion), a stable one.
+TEST(Continuation, EndsInNewtonsMinimumOnABiaxialRelease) {
+  Membrane m = make_membrane(build_sheet({0.03, 0.03, 13, 13}, SheetOptions{}));
+  stretch_frame(m, 1.3, 1.2);
+  impregnate(m, *make_ellipse({0.0195, 0.018}, 0.008, 0.006, 0.0), epoxy(), +1, false);
+  perturb(m, 1e-4, 1);
+  begin_release(m);
+  set_release_level(m, 0.0);
+  const double k = m.sheet.stiffness.stretch;
+  NewtonOptions o;
+  o.force_scale = k * m.sheet.grid.hx();
+  o.tolerance = 1e-9;
+  o.max_iterations = 5000;
+  State newton = m.state, ptc = m.state;
+  ASSERT_TRUE(solve_newton(m.sheet.model, newton, o).converged);
+  o.continuation = true;
+  const SolveReport r = solve_newton(m.sheet.model, ptc, o);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_EQ(r.negative_curvature_steps, 0);  // continuation never takes Newton's saddle steps
+  EXPECT_NEAR(potential_energy(m.sheet.model, ptc.x) / potential_energy(m.sheet.model, newton.x),
+              1.0, 1e-6);
+  double worst = 0.0;
+  for (Eigen::Index p = 0; p < ptc.x.cols(); p += 7)
+    for (Eigen::Index q = 0; q < ptc.x.cols(); q += 5)
+      worst = std::max(worst, std::abs((ptc.x.col(p) - ptc.x.col(q)).norm() -
+                                       (newton.x.col(p) - newton.x.col(q)).norm()));
+  EXPECT_LT(worst, 1e-4 * 0.03);
+  EXPECT_TRUE(check_stability(m.sheet.model, ptc.x, k).stable);
+}
+
+// Its shift falls with the residual (switched evolution relaxation), so near a minimum its steps
+// become Newton's and square the residual: on a perturbed stretched sheet, at least two
+// iterations with r_{k+1} < 10 r_k^2 once r_k < 1e-2 (in units of the force scale).
+TEST(Continuation, BecomesNewtonNearAMinimum) {
+  Membrane m = make_membrane(build_sheet({0.05, 0.05, 11, 11}, SheetOptions{}));
+  stretch_frame(m, 1.3, 1.1);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int p = 0; p < m.state.x.cols(); ++p)
+    if (!m.sheet.model.pinned(p)) m.state.x.col(p) += 2e-4 * Vec3(u(rng), u(rng), u(rng));
+  NewtonOptions o;
+  o.continuation = true;
+  o.force_scale = m.sheet.stiffness.stretch * m.sheet.grid.hx();
+  o.tolerance = 1e-13;
+  std::vector<double> residuals;
+  o.progress = [&](const Progress& p) { residuals.push_back(p.residual_relative); };
+  const SolveReport r = solve_newton(m.sheet.model, m.state, o);
+  EXPECT_TRUE(r.converged) << r.message;
+  int quadratic = 0;
+  for (size_t k = 0; k + 1 < residuals.size(); ++k)
+    if (residuals[k] < 1e-2 && residuals[k] > 1e-10 &&
+        residuals[k + 1] < std::max(10.0 * residuals[k] * residuals[k], 1e-12))
+      ++quadratic;
+  EXPECT_GE(quadratic, 2);
 }
 
 }  // namespace
