@@ -45,13 +45,14 @@ Outcome run(const std::string& name, const std::vector<std::string>& sets, int t
   return {obj.str(), report, r.prepared.membrane.state.x};
 }
 
+// On two threads, where a race would show; one thread's runs then agree with these bit for bit
+// (ThreadsDoNotChangeResults), so they repeat too.
 TEST(Determinism, RepeatedRunsAreIdentical) {
-  for (const auto& [name, sets] : kScenes)
-    for (int threads : {1, 2}) {
-      const Outcome a = run(name, sets, threads), b = run(name, sets, threads);
-      EXPECT_EQ(a.obj, b.obj) << name << ", " << threads << " thread(s)";
-      EXPECT_EQ(a.report.dump(), b.report.dump()) << name << ", " << threads << " thread(s)";
-    }
+  for (const auto& [name, sets] : kScenes) {
+    const Outcome a = run(name, sets, 2), b = run(name, sets, 2);
+    EXPECT_EQ(a.obj, b.obj) << name;
+    EXPECT_EQ(a.report.dump(), b.report.dump()) << name;
+  }
   omp_set_num_threads(omp_get_num_procs());
 }
 
