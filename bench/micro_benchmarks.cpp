@@ -141,11 +141,14 @@ void BM_Factorization(benchmark::State& state) {
     llt.cholmod().method[0].ordering = o;
   }
   llt.analyzePattern(h);
-  omp_set_max_active_levels(0);  // as Newton factorizes: CHOLMOD's fixed 4 threads stay off
+  // As Newton factorizes: CHOLMOD's fixed 4 threads stay off (restored for the kernels after).
+  const int levels = omp_get_max_active_levels();
+  omp_set_max_active_levels(0);
   for (auto _ : state) {
     llt.factorize(h);
     if (llt.info() != Eigen::Success) state.SkipWithError("not positive definite");
   }
+  omp_set_max_active_levels(levels);
   state.counters["nnz_L_per_particle"] =
       static_cast<double>(llt.cholmod().lnz) / static_cast<double>(s.model.num_particles());
   set_per_item(state, s.model.num_particles());  // ns per particle
