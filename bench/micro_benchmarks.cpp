@@ -96,24 +96,35 @@ void BM_Curvature(benchmark::State& state) {
 }
 BENCHMARK(BM_Curvature)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
 
+// A latex sheet with bending, n x n, bent out of plane into a saddle so that every element's
+// Hessian is nontrivial, with every coordinate free (dof k is coordinate k).
+struct BentSheet {
+  explicit BentSheet(int n)
+      : sheet(membra::build_sheet({0.2, 0.2, n, n}, membra::SheetOptions{})),
+        x(sheet.model.reference),
+        dof(static_cast<size_t>(x.size())) {
+    for (Eigen::Index p = 0; p < x.cols(); ++p)
+      x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+    for (size_t k = 0; k < dof.size(); ++k) dof[k] = static_cast<int>(k);
+  }
+  membra::Sheet sheet;
+  membra::Points x;
+  std::vector<int> dof;
+};
+
 // One assembly of the analytic Hessian into the fixed pattern (the pattern built once, outside
 // the loop, as Newton does), exact (arg 1 = 0) or element-wise projected (1), on a latex sheet
 // with bending, bent out of plane so that every element's Hessian is nontrivial.
 void BM_HessianAssembly(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const bool project = state.range(1) != 0;
-  const auto s = membra::build_sheet({0.2, 0.2, n, n}, membra::SheetOptions{});
-  membra::Points x = s.model.reference;
-  for (Eigen::Index p = 0; p < x.cols(); ++p)
-    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
-  std::vector<int> dof(static_cast<size_t>(x.size()));
-  for (size_t k = 0; k < dof.size(); ++k) dof[k] = static_cast<int>(k);
-  membra::HessianAssembler a(s.model, dof, static_cast<int>(dof.size()));
+  const BentSheet b(n);
+  membra::HessianAssembler a(b.sheet.model, b.dof, static_cast<int>(b.dof.size()));
   for (auto _ : state) {
-    const auto& h = a.assemble(x, project);
+    const auto& h = a.assemble(b.x, project);
     benchmark::DoNotOptimize(h.valuePtr());
   }
-  set_per_item(state, s.model.num_particles());  // ns per particle
+  set_per_item(state, b.sheet.model.num_particles());  // ns per particle
 }
 BENCHMARK(BM_HessianAssembly)->Args({64, 0})->Args({64, 1})->Unit(benchmark::kMillisecond);
 
@@ -122,15 +133,9 @@ BENCHMARK(BM_HessianAssembly)->Args({64, 0})->Args({64, 1})->Unit(benchmark::kMi
 // fill-reducing ordering chosen by CHOLMOD's default strategy (arg 1 = 0), AMD alone (1), METIS
 // (2) or CHOLMOD's nested dissection (3); the symbolic analysis is done once, outside the loop.
 void BM_Factorization(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
-  const auto s = membra::build_sheet({0.2, 0.2, n, n}, membra::SheetOptions{});
-  membra::Points x = s.model.reference;
-  for (Eigen::Index p = 0; p < x.cols(); ++p)
-    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
-  std::vector<int> dof(static_cast<size_t>(x.size()));
-  for (size_t k = 0; k < dof.size(); ++k) dof[k] = static_cast<int>(k);
-  membra::HessianAssembler a(s.model, dof, static_cast<int>(dof.size()));
-  a.assemble(x, true);
+  const BentSheet b(static_cast<int>(state.range(0)));
+  membra::HessianAssembler a(b.sheet.model, b.dof, static_cast<int>(b.dof.size()));
+  a.assemble(b.x, true);
   const Eigen::VectorXd diag = a.diagonal().cwiseAbs();
   const Eigen::SparseMatrix<double>& h = a.add_to_diagonal(1e-6 * diag);
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
@@ -150,8 +155,8 @@ void BM_Factorization(benchmark::State& state) {
   }
   omp_set_max_active_levels(levels);
   state.counters["nnz_L_per_particle"] =
-      static_cast<double>(llt.cholmod().lnz) / static_cast<double>(s.model.num_particles());
-  set_per_item(state, s.model.num_particles());  // ns per particle
+      static_cast<double>(llt.cholmod().lnz) / static_cast<double>(b.sheet.model.num_particles());
+  set_per_item(state, b.sheet.model.num_particles());  // ns per particle
 }
 BENCHMARK(BM_Factorization)->ArgsProduct({{64, 128}, {0, 1, 2, 3}})->Unit(benchmark::kMillisecond);
 

@@ -19,6 +19,41 @@
 namespace membra {
 namespace {
 
+// A 30 x 30 mm sheet (or the disk `keep` leaves of it) stretched 1.3 x 1.2 with a stiff ellipse
+// of epoxy, perturbed 0.1 mm (seed 1) and released in one step, free: it buckles.
+Membrane biaxial_release(const NodeMask& keep = {}) {
+  Membrane m = make_membrane(build_sheet({0.03, 0.03, 13, 13}, SheetOptions{}, keep));
+  stretch_frame(m, 1.3, 1.2);
+  impregnate(m, *make_ellipse({0.0195, 0.018}, 0.008, 0.006, 0.0), epoxy(), +1, false);
+  perturb(m, 1e-4, 1);
+  begin_release(m);
+  set_release_level(m, 0.0);
+  return m;
+}
+
+// The largest difference of pairwise distances (a sample of pairs) between two forms: zero when
+// they differ by a rigid motion only, m.
+double pairwise_mismatch(const Points& a, const Points& b) {
+  double worst = 0.0;
+  for (Eigen::Index p = 0; p < a.cols(); p += 7)
+    for (Eigen::Index q = 0; q < a.cols(); q += 5)
+      worst =
+          std::max(worst, std::abs((a.col(p) - a.col(q)).norm() - (b.col(p) - b.col(q)).norm()));
+  return worst;
+}
+
+// A 50 x 50 mm sheet stretched 1.3 x 1.1 on its frame, every free particle moved by up to
+// 0.2 mm (seed 5): near its stable minimum, the start of the quadratic-convergence tests.
+Membrane perturbed_stretched_sheet() {
+  Membrane m = make_membrane(build_sheet({0.05, 0.05, 11, 11}, SheetOptions{}));
+  stretch_frame(m, 1.3, 1.1);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int p = 0; p < m.state.x.cols(); ++p)
+    if (!m.sheet.model.pinned(p)) m.state.x.col(p) += 2e-4 * Vec3(u(rng), u(rng), u(rng));
+  return m;
+}
+
 class NewtonHessian : public ::testing::TestWithParam<bool> {};
 
 // With springs, and with bending alone (its entries are ~1e4x smaller than the springs', so
@@ -89,12 +124,7 @@ TEST(Newton, AgreesWithTheStaticSolverOnBiaxialReleases) {
     NodeMask keep;
     if (disk)
       keep = [](double u, double v) { return std::hypot(u - 0.015, v - 0.015) <= 0.015 + 1e-9; };
-    Membrane m = make_membrane(build_sheet({0.03, 0.03, 13, 13}, SheetOptions{}, keep));
-    stretch_frame(m, 1.3, 1.2);
-    impregnate(m, *make_ellipse({0.0195, 0.018}, 0.008, 0.006, 0.0), epoxy(), +1, false);
-    perturb(m, 1e-4, 1);
-    begin_release(m);
-    set_release_level(m, 0.0);
+    Membrane m = biaxial_release(keep);
     const double k = m.sheet.stiffness.stretch, scale = k * m.sheet.grid.hx();
     State a = m.state, b = m.state;
     NewtonOptions no;
@@ -108,25 +138,14 @@ TEST(Newton, AgreesWithTheStaticSolverOnBiaxialReleases) {
     const double ea = potential_energy(m.sheet.model, a.x),
                  eb = potential_energy(m.sheet.model, b.x);
     EXPECT_NEAR(ea / eb, 1.0, 1e-6) << (disk ? "disk" : "square");
-    // Pairwise distances are blind to rigid motions.
-    double worst = 0.0;
-    for (Eigen::Index p = 0; p < a.x.cols(); p += 7)
-      for (Eigen::Index q = 0; q < a.x.cols(); q += 5)
-        worst = std::max(
-            worst, std::abs((a.x.col(p) - a.x.col(q)).norm() - (b.x.col(p) - b.x.col(q)).norm()));
-    EXPECT_LT(worst, 1e-4 * 0.03) << (disk ? "disk" : "square");
+    EXPECT_LT(pairwise_mismatch(a.x, b.x), 1e-4 * 0.03) << (disk ? "disk" : "square");
   }
 }
 
 // Near a minimum Newton converges quadratically: once the residual is small, each iteration
 // squares it (ratio r_{k+1} / r_k^2 bounded, in units of the force scale) until round-off.
 TEST(Newton, ConvergesQuadraticallyNearAMinimum) {
-  Membrane m = make_membrane(build_sheet({0.05, 0.05, 11, 11}, SheetOptions{}));
-  stretch_frame(m, 1.3, 1.1);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int p = 0; p < m.state.x.cols(); ++p)
-    if (!m.sheet.model.pinned(p)) m.state.x.col(p) += 2e-4 * Vec3(u(rng), u(rng), u(rng));
+  Membrane m = perturbed_stretched_sheet();
   NewtonOptions o;
   o.force_scale = m.sheet.stiffness.stretch * m.sheet.grid.hx();
   o.tolerance = 1e-13;
@@ -170,12 +189,7 @@ TEST(Newton, EscapesTheSaddleOfACompressedFlatSheet) {
 // agreement test it must end in Newton's buckled minimum (energy within 1e-6 relative, positions
 // within 1e-4 of the size up to a rigid motion), a stable one.
 TEST(Continuation, EndsInNewtonsMinimumOnABiaxialRelease) {
-  Membrane m = make_membrane(build_sheet({0.03, 0.03, 13, 13}, SheetOptions{}));
-  stretch_frame(m, 1.3, 1.2);
-  impregnate(m, *make_ellipse({0.0195, 0.018}, 0.008, 0.006, 0.0), epoxy(), +1, false);
-  perturb(m, 1e-4, 1);
-  begin_release(m);
-  set_release_level(m, 0.0);
+  Membrane m = biaxial_release();
   const double k = m.sheet.stiffness.stretch;
   NewtonOptions o;
   o.force_scale = k * m.sheet.grid.hx();
@@ -189,12 +203,7 @@ TEST(Continuation, EndsInNewtonsMinimumOnABiaxialRelease) {
   EXPECT_EQ(r.negative_curvature_steps, 0);  // continuation never takes Newton's saddle steps
   EXPECT_NEAR(potential_energy(m.sheet.model, ptc.x) / potential_energy(m.sheet.model, newton.x),
               1.0, 1e-6);
-  double worst = 0.0;
-  for (Eigen::Index p = 0; p < ptc.x.cols(); p += 7)
-    for (Eigen::Index q = 0; q < ptc.x.cols(); q += 5)
-      worst = std::max(worst, std::abs((ptc.x.col(p) - ptc.x.col(q)).norm() -
-                                       (newton.x.col(p) - newton.x.col(q)).norm()));
-  EXPECT_LT(worst, 1e-4 * 0.03);
+  EXPECT_LT(pairwise_mismatch(ptc.x, newton.x), 1e-4 * 0.03);
   EXPECT_TRUE(check_stability(m.sheet.model, ptc.x, k).stable);
 }
 
@@ -202,12 +211,7 @@ TEST(Continuation, EndsInNewtonsMinimumOnABiaxialRelease) {
 // become Newton's and square the residual: on a perturbed stretched sheet, at least two
 // iterations with r_{k+1} < 10 r_k^2 once r_k < 1e-2 (in units of the force scale).
 TEST(Continuation, BecomesNewtonNearAMinimum) {
-  Membrane m = make_membrane(build_sheet({0.05, 0.05, 11, 11}, SheetOptions{}));
-  stretch_frame(m, 1.3, 1.1);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int p = 0; p < m.state.x.cols(); ++p)
-    if (!m.sheet.model.pinned(p)) m.state.x.col(p) += 2e-4 * Vec3(u(rng), u(rng), u(rng));
+  Membrane m = perturbed_stretched_sheet();
   NewtonOptions o;
   o.continuation = true;
   o.force_scale = m.sheet.stiffness.stretch * m.sheet.grid.hx();
