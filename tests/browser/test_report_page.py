@@ -19,13 +19,45 @@ CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
          "--enable-unsafe-swiftshader", "--disable-quic", "--no-first-run",
          "--disable-background-networking", "--disable-component-update", "--disable-sync",
-         "--window-size=1300,1000", "--virtual-time-budget=20000",
-         "--enable-logging=stderr", "--v=0"]
+         "--window-size=1300,1000", "--enable-logging=stderr", "--v=0"]
+# Chromium's virtual time does not wait for the page's own asynchronous work (parsing the GLB,
+# compiling shaders in software): on a loaded machine a 20 s budget can end before the first
+# frame. A page that is not ready is loaded again with a longer budget; one that never gets
+# ready within the last still fails.
+BUDGETS_MS = (20000, 60000, 120000)
 
 
-def chromium(page, profile, *extra):
-    cmd = [CHROMIUM, *FLAGS, f"--user-data-dir={profile}", *extra, page.as_uri()]
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+def chromium(page, profile, *extra, budget=BUDGETS_MS[0]):
+    cmd = [CHROMIUM, *FLAGS, f"--virtual-time-budget={budget}", f"--user-data-dir={profile}",
+           *extra, page.as_uri()]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=240)
+
+
+def ready_dom(page, profile):
+    """The page's DOM once its 3-D view has marked itself ready (or the last attempt's)."""
+    for budget in BUDGETS_MS:
+        dom = chromium(page, profile, "--dump-dom", budget=budget)
+        if dom.returncode == 0 and 'data-view="ready"' in dom.stdout:
+            break
+    return dom
+
+
+def coloured_share(shot, rect):
+    img = matplotlib.image.imread(shot)[..., :3]
+    x, y, w, h = (int(round(v)) for v in rect)
+    view = img[y + 2:y + h - 2, x + 2:x + w - 2]
+    assert view.size > 0
+    saturation = view.max(axis=2) - view.min(axis=2)
+    return img, view, saturation > 0.35
+
+
+def drawn_screenshot(page, profile, shot, rect):
+    """A screenshot with the form drawn (or the last attempt's), as for ready_dom."""
+    for budget in BUDGETS_MS:
+        res = chromium(page, profile, f"--screenshot={shot}", budget=budget)
+        if res.returncode == 0 and shot.exists() and coloured_share(shot, rect)[2].mean() > 0.03:
+            break
+    return res
 
 
 def run_scene(out):
@@ -47,7 +79,7 @@ def test_report_page_shows_the_form_in_colour(tmp_path):
     assert page.exists()
     assert (out / "report_files" / "three.min.js").exists()
 
-    dom = chromium(page, tmp_path / "profile1", "--dump-dom")
+    dom = ready_dom(page, tmp_path / "profile1")
     assert dom.returncode == 0, dom.stderr[-2000:]
     body = re.search(r"<body[^>]*>", dom.stdout).group(0)
     assert 'data-view="ready"' in body, body + dom.stderr[-3000:]
@@ -56,20 +88,15 @@ def test_report_page_shows_the_form_in_colour(tmp_path):
     rect = [float(v) for v in re.search(r'data-view-rect="([^"]+)"', body).group(1).split(",")]
 
     shot = tmp_path / "page.png"
-    res = chromium(page, tmp_path / "profile2", f"--screenshot={shot}")
+    res = drawn_screenshot(page, tmp_path / "profile2", shot, rect)
     assert res.returncode == 0 and shot.exists(), res.stderr[-2000:]
     assert console_errors(res.stderr) == []
     SHOT_DIR.mkdir(parents=True, exist_ok=True)
     shutil.copy(shot, SHOT_DIR / "report_page.png")
 
-    img = matplotlib.image.imread(shot)[..., :3]
-    x, y, w, h = (int(round(v)) for v in rect)
-    view = img[y + 2:y + h - 2, x + 2:x + w - 2]
-    assert view.size > 0
     # The form in the map's colours: strongly saturated pixels (the background is white, the
     # shading grey), covering a real share of the view, and more than one hue.
-    saturation = view.max(axis=2) - view.min(axis=2)
-    coloured = saturation > 0.35
+    img, view, coloured = coloured_share(shot, rect)
     assert coloured.mean() > 0.03, f"only {coloured.mean():.4f} of the view is coloured"
     hues = view[coloured].argmax(axis=1)
     assert len(set(hues.tolist())) >= 2, "one hue only"
