@@ -54,13 +54,16 @@ std::vector<SceneBenchRow> run_scene_bench(const BenchArgs& args) {
     for (int n : args.scene_sizes) {
       const std::string res =
           "sheet.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]";
-      const Scene scene = load_scene(file, {res});
-      for (Solver solver : solvers) {
-        rows.push_back(bench_scene(scene, solver, args.budget));
-        const SceneBenchRow& r = rows.back();
-        if (!args.quiet)
-          std::cerr << r.scene << " " << n << " " << r.solver << ": " << r.report.wall_seconds
-                    << " s" << (r.over_budget ? " (budget)" : "") << "\n";
+      for (int levels : args.scene_multilevel) {
+        const Scene scene =
+            load_scene(file, {res, "simulation.multilevel=" + std::to_string(levels)});
+        for (Solver solver : solvers) {
+          rows.push_back(bench_scene(scene, solver, args.budget));
+          const SceneBenchRow& r = rows.back();
+          if (!args.quiet)
+            std::cerr << r.scene << " " << n << " " << r.solver << ": " << r.report.wall_seconds
+                      << " s" << (r.over_budget ? " (budget)" : "") << "\n";
+        }
       }
     }
   return rows;
@@ -68,10 +71,10 @@ std::vector<SceneBenchRow> run_scene_bench(const BenchArgs& args) {
 
 void print_scene_table(const std::vector<SceneBenchRow>& rows, double budget) {
   std::printf("\nscenes, full runs, budget %.0f s per run\n", budget);
-  std::printf("%-22s %5s %-7s %8s %8s %7s %5s %6s %9s %10s %7s\n", "scene", "n", "solver", "wall s",
-              "iters", "factor", "incr", "conv", "resid", "height mm", "total K");
+  std::printf("%-22s %5s %-12s %8s %8s %7s %5s %6s %9s %10s %7s\n", "scene", "n", "solver",
+              "wall s", "iters", "factor", "incr", "conv", "resid", "height mm", "total K");
   for (const auto& r : rows)
-    std::printf("%-22s %5d %-7s %8.2f %8ld %7ld %5d %6s %9.1e %10.2f %7.3f%s\n", r.scene.c_str(),
+    std::printf("%-22s %5d %-12s %8.2f %8ld %7ld %5d %6s %9.1e %10.2f %7.3f%s\n", r.scene.c_str(),
                 r.n, r.solver.c_str(), r.report.wall_seconds, r.report.iterations,
                 r.report.factorizations, r.increments, r.report.converged ? "yes" : "no",
                 r.report.residual_relative, r.height * 1e3, r.total_curvature,

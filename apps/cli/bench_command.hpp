@@ -18,6 +18,8 @@ struct BenchArgs {
   bool scenes = false;
   std::vector<int> scene_sizes{64, 128};
   std::vector<std::string> scene_solvers{"static", "newton"};
+  // simulation.multilevel for the scene runs: each value a run of its own (0: one grid).
+  std::vector<int> scene_multilevel{0};
   std::vector<std::string> scene_files{"examples/exp3_parallel.json",
                                        "examples/synclastic_ellipse.json",
                                        "examples/anticlastic_hyperbola.json"};

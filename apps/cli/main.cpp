@@ -13,6 +13,7 @@
 #include "membra/core/stop_request.hpp"
 #include "membra/io/output_set.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/process/multilevel.hpp"
 #include "membra/process/run.hpp"
 #include "membra/render/run_outputs.hpp"
 #include "membra/version.hpp"
@@ -117,6 +118,7 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   if (!render_note.empty()) std::cerr << "membra: warning: no PNG renders: " << render_note << "\n";
   out.commit();
   if (!quiet) {
+    if (!r.levels.empty()) std::cout << membra::levels_summary(r.levels) << "\n";
     std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"
               << "results in " << out.dir().string()
               << "/ (report.html, final.glb, final.obj, final.ply, report.json"
@@ -194,6 +196,12 @@ CLI::App* add_bench(CLI::App& app, Args& a) {
       ->capture_default_str();
   bench->add_option("--scene-solvers", a.bench.scene_solvers, "Equilibrium solvers for the scenes")
       ->delimiter(',')
+      ->capture_default_str();
+  bench
+      ->add_option("--scene-multilevel", a.bench.scene_multilevel,
+                   "simulation.multilevel values for the scenes, each run side by side (0: off)")
+      ->delimiter(',')
+      ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   bench->add_option("--scene-files", a.bench.scene_files, "Scene files for --scenes")
       ->delimiter(',');

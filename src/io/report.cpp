@@ -166,6 +166,19 @@ void report_branches(const RunResult& r, json& j) {
   }
 }
 
+// The grids of a multilevel run (simulation.multilevel), coarsest first.
+void report_levels(const RunResult& r, json& j) {
+  j["levels"] = json::array();
+  for (const GridLevel& l : r.levels)
+    j["levels"].push_back({{"resolution", {l.nx, l.ny}},
+                           {"iterations", l.solve.iterations},
+                           {"factorizations", l.solve.factorizations},
+                           {"converged", l.solve.converged},
+                           {"residual_relative", l.solve.residual_relative},
+                           {"wall_seconds", l.solve.wall_seconds},
+                           {"start", l.from_coarser ? "coarser grid" : "path"}});
+}
+
 json report_units() {
   return {
       {"residual", "N"},
@@ -218,6 +231,7 @@ json report_units() {
       {"curvature.max_density", "1/mm^2"},
       {"shape.bbox_min", "mm"},
       {"shape.bbox_max", "mm"},
+      {"levels.wall_seconds", "s (the grid's solves)"},
       {"branches.height", "mm (as shape.height, of the branch's form)"},
       {"branches.global_height", "mm"},
       {"branches.total_K", "rad (as curvature.total)"},
@@ -233,6 +247,7 @@ json make_report(const Scene& scene, const RunResult& r) {
   json j;
   report_run(scene, r, j);
   report_steps(r, j);
+  if (!r.levels.empty()) report_levels(r, j);
   if (!r.solve.diverged) {
     report_form(r, j);
     if (r.curvature_map) report_curvature_map(*r.curvature_map, j);

@@ -40,6 +40,7 @@ const std::vector<std::string_view> kSimulationKeys = {"solver",
                                                        "stop_when_converged",
                                                        "path_tolerance",
                                                        "explore",
+                                                       "multilevel",
                                                        "max_seconds",
                                                        "ramp_seconds"};
 
@@ -154,6 +155,10 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
       std::max(sim.tolerance, s.number("path_tolerance", sim.tolerance, Bounds{0.0, 1.0, true}));
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
   sim.explore = static_cast<int>(s.integer("explore", sim.explore, 1, 1000));
+  sim.multilevel = static_cast<int>(s.integer("multilevel", sim.multilevel, 0, kMaxNodesPerSide));
+  if (sim.multilevel > 0 && sim.multilevel < 5)
+    throw InputError(s.pointer("multilevel"),
+                     "the coarsest grid needs at least 5 nodes along its longer side (0: off)");
   sim.max_seconds = s.number("max_seconds", sim.max_seconds, Bounds::between(0.0, 1e7));
   sim.ramp_seconds = s.number("ramp_seconds", sim.ramp_seconds, Bounds::between(0.0, 1e6));
   if (sim.ramp_seconds > 0.0 && sim.is_static())
@@ -167,6 +172,11 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
         << " s): raise `steps` or shorten the ramp";
     throw InputError(s.pointer("ramp_seconds"), msg.str());
   }
+  if (sim.multilevel > 0 && !sim.is_static())
+    throw InputError(s.pointer("multilevel"),
+                     "a multilevel release needs an equilibrium solver (newton or static), "
+                     "not " +
+                         solver);
   if (sim.explore > 1 && !sim.is_static())
     throw InputError(s.pointer("explore"),
                      "exploring the stable forms needs an equilibrium solver (static or newton), "

@@ -167,7 +167,8 @@ json write_simulation(const Scene& scene) {
             {"max_iterations", s.max_iterations},
             {"tolerance", s.tolerance},
             {"path_tolerance", s.path_tolerance},
-            {"stop_when_converged", s.stop_when_converged}};
+            {"stop_when_converged", s.stop_when_converged},
+            {"multilevel", s.multilevel}};
   if (s.ramp_seconds > 0.0) j["ramp_seconds"] = s.ramp_seconds;
   if (scene.sheet.stretch_stiffness) j["K"] = in(*scene.sheet.stretch_stiffness, units::N_per_mm);
   return j;

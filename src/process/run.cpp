@@ -5,6 +5,7 @@
 #include <string>
 
 #include "membra/process/explore.hpp"
+#include "membra/process/multilevel.hpp"
 #include "membra/process/path.hpp"
 #include "membra/process/steps.hpp"
 #include "membra/process/summary.hpp"
@@ -46,7 +47,7 @@ void SceneRun::start_budget() {
                                std::chrono::duration<double>(scene_.simulation.max_seconds));
 }
 
-bool SceneRun::apply(const ProtocolStep& step) {
+bool SceneRun::apply(const ProtocolStep& step, const Points* start) {
   if (diverged()) throw std::logic_error("the run diverged: no further step can be applied");
   start_budget();
   StepEffects effects;
@@ -54,9 +55,19 @@ bool SceneRun::apply(const ProtocolStep& step) {
   for (StressFeature& f : effects.features) r_.features.push_back(std::move(f));
   if (effects.curvature_map) r_.curvature_map = std::move(effects.curvature_map);
   State& s = r_.prepared.membrane.state;
-  const StepReport followed =
-      follow_path(scene_, r_.prepared, s, effects.report.name, path, progress_, recorder_);
-  effects.report.solve = followed.solve;
+  if (start) {  // the step's change in full, solved once from the given form
+    if (start->cols() != s.x.cols()) throw std::invalid_argument("a start form per particle");
+    if (path.kind == Path::Kind::gradual) path.set(1.0);
+    s.x = *start;
+    s.v.setZero();
+    effects.report.solve =
+        solve_scene_step(scene_, r_.prepared, s, effects.report.name, progress_, &recorder_);
+    recorder_.record(r_.prepared.membrane.sheet.model, s.x,
+                     r_.prepared.membrane.sheet.material.thickness);
+  } else {
+    effects.report.solve =
+        follow_path(scene_, r_.prepared, s, effects.report.name, path, progress_, recorder_).solve;
+  }
   if (const auto* cm = step.as<CurvatureMapStep>()) curvature_field_ = cm->curvature;
   return record(std::move(effects.report));
 }
@@ -83,6 +94,11 @@ RunResult SceneRun::finish() {
 }
 
 RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
+  if (multilevel_grids(scene).size() > 1) {
+    RunResult r = run_multilevel(scene, progress);
+    if (scene.simulation.explore > 1 && !r.solve.diverged) explore_branches(scene, r, progress);
+    return r;
+  }
   SceneRun run(scene, progress);
   if (scene.protocol.empty()) run.solve();
   for (const ProtocolStep& step : scene.protocol)

@@ -32,6 +32,8 @@ SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
   row.scene = scene.name;
   row.n = scene.grid.nx;
   row.solver = std::string(solver_name(solver));
+  if (scene.simulation.multilevel > 0)  // "newton/ml32": multilevel down to 32 nodes
+    row.solver += "/ml" + std::to_string(scene.simulation.multilevel);
   row.increments = path_increments(scene);
   const Stopwatch clock;
   try {
@@ -39,6 +41,15 @@ SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
       if (clock.seconds() > budget) throw OverBudget();
     });
     row.report = r.solve;
+    // A multilevel run's work is every grid's (its `solve` is the finest grid's).
+    if (!r.levels.empty()) {
+      row.report.iterations = row.report.factorizations = row.report.force_passes = 0;
+      for (const GridLevel& l : r.levels) {
+        row.report.iterations += l.solve.iterations;
+        row.report.factorizations += l.solve.factorizations;
+        row.report.force_passes += l.solve.force_passes;
+      }
+    }
     row.height = r.shape.height;
     row.total_curvature = r.curvature.total;
     row.stable = r.stability.checked && r.stability.stable;

@@ -236,6 +236,41 @@ TEST(CliBench, RunsTheSolversSideBySideOnPn) {
   EXPECT_NE(bad.text.find("unknown solver 'foo'"), std::string::npos) << bad.text;
 }
 
+// simulation.multilevel: the report lists every grid, the summary says what each did, and the
+// benchmark runs the same scene with and without levels side by side, counting every grid's work.
+TEST(CliRun, MultilevelReportsEveryGrid) {
+  const fs::path dir = unique_temp_dir();
+  const std::string scene = std::string(MEMBRA_SOURCE_DIR) + "/examples/bilayer_roll.json";
+  const Output o = membra_cli("run " + scene +
+                              " --set 'sheet.resolution=[21,21]' --set simulation.multilevel=11 "
+                              "--out " +
+                              (dir / "run").string());
+  ASSERT_EQ(o.code, 0) << o.text;
+  EXPECT_NE(o.text.find("multilevel: 11x11 path"), std::string::npos) << o.text;
+  std::ifstream in(dir / "run" / "report.json");
+  const json j = json::parse(in);
+  ASSERT_EQ(j["levels"].size(), 2u) << j.dump();
+  EXPECT_EQ(j["levels"][0]["resolution"], json::array({11, 11}));
+  EXPECT_EQ(j["levels"][1]["start"], "coarser grid");
+  EXPECT_TRUE(j["levels"][1]["converged"].get<bool>());
+
+  const fs::path out = dir / "bench.json";
+  const Output b = membra_cli(
+      "bench --sizes 8 --solvers static --scenes --scene-sizes 21 "
+      "--scene-solvers newton --scene-multilevel 0,11 --scene-files " +
+      scene + " --budget 120 -q --json-out " + out.string());
+  ASSERT_EQ(b.code, 0) << b.text;
+  std::ifstream bin(out);
+  const json r = json::parse(bin)["scenes"];
+  ASSERT_EQ(r.size(), 2u) << r.dump();
+  EXPECT_EQ(r[0]["solver"], "newton");
+  EXPECT_EQ(r[1]["solver"], "newton/ml11");
+  EXPECT_TRUE(r[1]["converged"].get<bool>());
+  // Every grid's iterations: more than the 21x21 grid's own settling solve in the report above.
+  EXPECT_GT(r[1]["iterations"].get<long>(), j["levels"][1]["iterations"].get<long>());
+  fs::remove_all(dir);
+}
+
 // --scenes: the forward examples run in full with each equilibrium solver, side by side.
 TEST(CliBench, ScenesRunTheExamplesWithEachEquilibriumSolver) {
   const fs::path dir = unique_temp_dir();

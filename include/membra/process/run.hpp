@@ -20,9 +20,11 @@ class SceneRun {
   explicit SceneRun(const Scene& scene, ProgressFn progress = {});
   SceneRun(const SceneRun&) = delete;  // the frame recorder points into the result
   SceneRun& operator=(const SceneRun&) = delete;
-  // Carries out one step and follows its path to equilibrium. Returns false when the solve
-  // diverged (the run is then over: further steps are refused with std::logic_error).
-  bool apply(const ProtocolStep& step);
+  // Carries out one step and follows its path to equilibrium — or, given a `start` form (one
+  // position per particle), applies the step's change in full and solves once from that form
+  // (multilevel.hpp). Returns false when the solve diverged (the run is then over: further steps
+  // are refused with std::logic_error).
+  bool apply(const ProtocolStep& step, const Points* start = nullptr);
   // A solve of the scene as it stands (a scene without protocol: its only step).
   bool solve();
   // The run so far, summarised (a copy: steps may follow).

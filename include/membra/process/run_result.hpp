@@ -46,6 +46,14 @@ struct CurvatureMapResult {
 
 struct Branch;
 
+// One solve of a grid in a multilevel run (process/multilevel.hpp): its size, how it began and
+// its solves' totals.
+struct GridLevel {
+  int nx = 0, ny = 0;
+  bool from_coarser = false;  // started from the coarser grid's form (else: followed the path)
+  SolveReport solve;
+};
+
 struct RunResult {
   PreparedScene prepared;  // prepared.membrane.state holds the final state
   SolveReport solve;       // totals over all solves; residual and convergence of the last
@@ -71,6 +79,9 @@ struct RunResult {
   // most often found first; empty otherwise. This result is release 0's (the scene's own
   // imperfection), one of them when it is stable.
   std::vector<Branch> branches;
+  // simulation.multilevel: every grid's solve, coarsest first, the scene's own last (whose
+  // solve is `solve`); empty when the run used one grid.
+  std::vector<GridLevel> levels;
   bool out_of_time = false;  // stopped unconverged at simulation.max_seconds
   int explored = 0;          // releases made (0: no exploration)
   int unsettled = 0;         // of them, ended unconverged or at a saddle (in no branch)

@@ -40,6 +40,10 @@ struct SimulationSpec {
   // Releases of the scene, each with another seeded imperfection, to find every stable form it
   // can take (explore.hpp); 1: the scene's own release only.
   int explore = 1;
+  // Multilevel release (multilevel.hpp): the last step's path followed on grids halved down to
+  // this many nodes along the longer side, each finer grid solved once from the coarser's form;
+  // 0: off, the path followed on the scene's own grid.
+  int multilevel = 0;
   // Wall-time budget of a run (each release of an exploration), s; 0: none. A run that
   // exhausts it stops unconverged and says so.
   double max_seconds = 0.0;

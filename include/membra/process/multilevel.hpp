@@ -1,0 +1,35 @@
+#pragma once
+// Multilevel release: a scene on a fine grid follows its last step's path (the release) on a
+// grid of half its resolution — recursively, down to `simulation.multilevel` nodes along the
+// longer side — and each finer grid starts from the coarser grid's end form (carried over by
+// geometry/grid_prolongation.hpp) with one solve of the step's full change. The path, where the
+// sheet picks its branch, is followed where an iteration is cheap; the fine grid only settles
+// the form's detail near it (docs/solver.md, "Multilevel release").
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "membra/core/progress.hpp"
+#include "membra/process/run_result.hpp"
+#include "membra/process/scene.hpp"
+
+namespace membra {
+
+// The grids a run of `scene` passes through, coarsest first, the scene's own last: a single
+// entry when multilevel does not apply (simulation.multilevel 0, a time-stepping solver, a
+// protocol whose last step needs no solve, or a grid too small to halve above the coarsest).
+std::vector<std::pair<int, int>> multilevel_grids(const Scene& scene);
+
+// The scene on an nx x ny grid, as the coarser levels run it: the same sheet, pattern and
+// protocol; no frames and no exploration.
+Scene scene_at_resolution(const Scene& scene, int nx, int ny);
+
+// Runs `scene` through its levels (multilevel_grids). A coarser level that ends unconverged
+// or unstable hands nothing on: the scene's own grid then follows the path itself. The
+// result's `levels` lists every grid's run.
+RunResult run_multilevel(const Scene& scene, const ProgressFn& progress);
+
+// One line for people: "multilevel: 32x32 path, 745 iterations, 15.1 s; 64x64 from 32x32, ...".
+std::string levels_summary(const std::vector<GridLevel>& levels);
+
+}  // namespace membra

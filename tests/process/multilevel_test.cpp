@@ -1,0 +1,74 @@
+// Multilevel release (docs/solver.md): which grids a run passes through, and that the form a
+// coarser grid hands on settles on the finer one where the physics has one answer — a coat on
+// one face rolls the sheet to Timoshenko's radius, from a coarser grid as from the path.
+#include "membra/process/multilevel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "membra/core/input_error.hpp"
+#include "membra/io/scene.hpp"
+#include "membra/model/bilayer.hpp"
+#include "membra/process/run.hpp"
+
+namespace membra {
+namespace {
+
+using Grids = std::vector<std::pair<int, int>>;
+
+Scene example(const std::string& name, std::vector<std::string> sets) {
+  return load_scene(std::string(MEMBRA_SOURCE_DIR) + "/examples/" + name, sets);
+}
+
+TEST(Multilevel, HalvesTheGridDownToTheCoarsest) {
+  EXPECT_EQ(multilevel_grids(example("exp3_parallel.json",
+                                     {"sheet.resolution=[64,64]", "simulation.multilevel=32"})),
+            (Grids{{32, 32}, {64, 64}}));
+  // A sheet twice as long as wide keeps square cells on every grid.
+  EXPECT_EQ(multilevel_grids(example(
+                "exp3_parallel.json",
+                {"sheet.size=[200,100]", "sheet.resolution=[129,65]", "simulation.multilevel=32"})),
+            (Grids{{33, 17}, {65, 33}, {129, 65}}));
+  // Off, too small to halve above the coarsest, or a solver that follows no path: one grid.
+  EXPECT_EQ(multilevel_grids(example("exp3_parallel.json", {"sheet.resolution=[64,64]"})),
+            (Grids{{64, 64}}));
+  EXPECT_EQ(multilevel_grids(example("exp3_parallel.json",
+                                     {"sheet.resolution=[61,61]", "simulation.multilevel=32"})),
+            (Grids{{61, 61}}));
+}
+
+TEST(Multilevel, RefusesWhatCannotWork) {
+  EXPECT_THROW(example("exp3_parallel.json", {"simulation.multilevel=3"}), InputError);
+  EXPECT_THROW(example("exp3_parallel.json", {"simulation.multilevel=-1"}), InputError);
+  EXPECT_THROW(example("exp3_parallel.json", {"simulation.solver=rk4", "simulation.multilevel=9"}),
+               InputError);
+}
+
+// bilayer_roll: the coat keeps the 300 mm frame length along x and curls the sheet into an arc
+// of Timoshenko's radius (the sagitta 51 mm). Released at 21² from an 11² release, the roll must
+// be that arc within 5 % and the plain 21² release's within 1 %.
+TEST(Multilevel, ACoarserGridsRollSettlesToTimoshenkosRadius) {
+  const std::vector<std::string> sets = {"sheet.resolution=[21,21]"};
+  const RunResult plain = run_scene(example("bilayer_roll.json", sets));
+  const RunResult r =
+      run_scene(example("bilayer_roll.json", {sets[0], "simulation.multilevel=11"}));
+  ASSERT_TRUE(plain.solve.converged && r.solve.converged) << r.solve.message;
+  ASSERT_EQ(r.levels.size(), 2u);
+  EXPECT_EQ(r.levels[0].nx, 11);
+  EXPECT_TRUE(r.levels[1].from_coarser);
+  EXPECT_TRUE(r.stability.stable);
+  const double kappa = bilayer_curvature_per_strain(latex(), epoxy()) * (1.0 - 1.0 / 1.5);
+  const double radius = 1.0 / kappa, arc = 0.3;
+  const double sagitta = radius * (1.0 - std::cos(0.5 * arc / radius));
+  EXPECT_NEAR(r.shape.height / sagitta, 1.0, 0.05);
+  EXPECT_NEAR(r.shape.height / plain.shape.height, 1.0, 0.01);
+  // The finer grid only settles the form: far fewer iterations than the coarse path took.
+  EXPECT_LT(r.levels[1].solve.iterations, r.levels[0].solve.iterations);
+}
+
+}  // namespace
+}  // namespace membra
