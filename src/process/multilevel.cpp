@@ -74,8 +74,8 @@ RunResult run_finest(const Scene& scene, const RunResult* coarse, const Progress
   return run.finish();
 }
 
-// A coarse end state worth carrying on: converged to a stable minimum within the budget.
-bool hands_on(const RunResult& r) {
+// An end state worth keeping or carrying on: converged to a stable minimum within the budget.
+bool settled(const RunResult& r) {
   return r.solve.converged && !r.solve.saddle && !r.out_of_time &&
          (r.stability.stable || !r.stability.checked);
 }
@@ -120,12 +120,12 @@ RunResult run_multilevel(const Scene& scene, const ProgressFn& progress) {
       s.simulation.max_seconds = std::max(1e-3, s.simulation.max_seconds - clock.seconds());
     return s;
   };
-  const bool carry = hands_on(coarse);
+  const bool carry = settled(coarse);
   RunResult r = run_finest(left(), carry ? &coarse : nullptr, progress);
   levels.push_back({scene.grid.nx, scene.grid.ny, carry, r.solve});
-  // A form carried over that does not settle on the finer grid: that grid follows the path
-  // itself, as a run without levels would.
-  if (carry && !r.solve.converged && !r.solve.diverged && !r.out_of_time) {
+  // A form carried over that does not settle on the finer grid, or settles at a saddle: that
+  // grid follows the path itself, as a run without levels would.
+  if (carry && !settled(r) && !r.solve.diverged && !r.out_of_time) {
     r = run_finest(left(), nullptr, progress);
     levels.push_back({scene.grid.nx, scene.grid.ny, false, r.solve});
   }
