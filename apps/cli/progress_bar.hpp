@@ -1,5 +1,6 @@
 #pragma once
 // A progress bar on stderr that appears only once a run has taken more than a second.
+#include "membra/core/stopwatch.hpp"
 #include "membra/solve/solve_report.hpp"
 
 namespace membra::cli {
@@ -17,6 +18,7 @@ class ProgressBar {
   bool tty_;
   bool drawn_ = false;
   double last_print_ = -1e9;
+  Stopwatch clock_;  // the run's time: a solve's own clock starts again at each increment
 };
 
 }  // namespace membra::cli
