@@ -238,8 +238,7 @@ TEST(CliBench, RunsTheSolversSideBySideOnPn) {
 
 // simulation.multilevel: the report lists every grid, the summary says what each did, and the
 // benchmark runs the same scene with and without levels side by side, counting every grid's work.
-TEST(CliRun, MultilevelReportsEveryGrid) {
-  const fs::path dir = unique_temp_dir();
+TEST_F(Cli, MultilevelReportsEveryGrid) {
   const std::string scene = std::string(MEMBRA_SOURCE_DIR) + "/examples/bilayer_roll.json";
   const Output o = membra_cli("run " + scene +
                               " --set 'sheet.resolution=[21,21]' --set simulation.multilevel=11 "
@@ -268,7 +267,6 @@ TEST(CliRun, MultilevelReportsEveryGrid) {
   EXPECT_TRUE(r[1]["converged"].get<bool>());
   // Every grid's iterations: more than the 21x21 grid's own settling solve in the report above.
   EXPECT_GT(r[1]["iterations"].get<long>(), j["levels"][1]["iterations"].get<long>());
-  fs::remove_all(dir);
 }
 
 // --scenes: the forward examples run in full with each equilibrium solver, side by side.
