@@ -93,17 +93,22 @@ RunResult SceneRun::finish() {
   return std::move(r_);
 }
 
-RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
-  if (multilevel_grids(scene).size() > 1) {
-    RunResult r = run_multilevel(scene, progress);
-    if (scene.simulation.explore > 1 && !r.solve.diverged) explore_branches(scene, r, progress);
-    return r;
-  }
+namespace {
+
+// The protocol carried out on the scene's own grid, every path followed.
+RunResult run_on_own_grid(const Scene& scene, const ProgressFn& progress) {
   SceneRun run(scene, progress);
   if (scene.protocol.empty()) run.solve();
   for (const ProtocolStep& step : scene.protocol)
     if (!run.apply(step)) break;
-  RunResult r = run.finish();
+  return run.finish();
+}
+
+}  // namespace
+
+RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
+  RunResult r = multilevel_grids(scene).size() > 1 ? run_multilevel(scene, progress)
+                                                   : run_on_own_grid(scene, progress);
   if (scene.simulation.explore > 1 && !r.solve.diverged) explore_branches(scene, r, progress);
   return r;
 }

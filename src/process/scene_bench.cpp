@@ -41,14 +41,10 @@ SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
       if (clock.seconds() > budget) throw OverBudget();
     });
     row.report = r.solve;
-    // A multilevel run's work is every grid's (its `solve` is the finest grid's).
+    // A multilevel run's work is every grid's (its `solve` is the finest grid's, the last).
     if (!r.levels.empty()) {
-      row.report.iterations = row.report.factorizations = row.report.force_passes = 0;
-      for (const GridLevel& l : r.levels) {
-        row.report.iterations += l.solve.iterations;
-        row.report.factorizations += l.solve.factorizations;
-        row.report.force_passes += l.solve.force_passes;
-      }
+      row.report = {};
+      for (const GridLevel& l : r.levels) accumulate(row.report, l.solve);
     }
     row.height = r.shape.height;
     row.total_curvature = r.curvature.total;
