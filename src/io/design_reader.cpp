@@ -16,7 +16,7 @@ namespace membra {
 namespace {
 using nlohmann::json;
 
-const std::vector<std::string_view> kTopKeys = {
+const std::vector<std::string_view> kDesignKeys = {
     "$schema", "name", "description", "target", "frame", "sheet", "materials", "resin", "design"};
 const std::vector<std::string_view> kTargetKinds = {"cap", "saddle", "cylinder", "height_field",
                                                     "obj"};
@@ -170,7 +170,7 @@ void read_design_settings(const JsonObject& top, DesignSpec& s) {
 
 DesignSpec parse_design(const json& j, const std::filesystem::path& base_dir) {
   DesignSpec s;
-  const JsonObject top(j, "", kTopKeys);
+  const JsonObject top(j, "", kDesignKeys);
   s.name = top.string("name", "design");
   if (!top.has("target")) throw InputError("/target", "a design needs a target surface");
   parse_target(top.at("target"), "/target", base_dir, s.target);

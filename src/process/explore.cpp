@@ -9,11 +9,6 @@
 namespace membra {
 namespace {
 
-// A stable end state: converged, and a minimum where the stability check ran.
-bool settled(const RunResult& r) {
-  return !r.solve.diverged && r.solve.converged && (!r.stability.checked || r.stability.stable);
-}
-
 bool any_pinned(const Model& m) {
   for (int p = 0; p < m.num_particles(); ++p)
     if (m.pinned(p)) return true;

@@ -74,12 +74,6 @@ RunResult run_finest(const Scene& scene, const RunResult* coarse, const Progress
   return run.finish();
 }
 
-// An end state worth keeping or carrying on: converged to a stable minimum within the budget.
-bool settled(const RunResult& r) {
-  return r.solve.converged && !r.solve.saddle && !r.out_of_time &&
-         (r.stability.stable || !r.stability.checked);
-}
-
 }  // namespace
 
 std::vector<std::pair<int, int>> multilevel_grids(const Scene& scene) {

@@ -10,15 +10,14 @@
 namespace membra {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // A capsule strip, and an elliptical plate with a round hole; areas known exactly (m^2).
 PatternPtr test_pattern(double& area) {
   const double mm = 1e-3;
   const auto strip = make_strip({{20 * mm, 150 * mm}, {120 * mm, 150 * mm}}, 10 * mm);
   const auto plate = make_difference({make_ellipse({150 * mm, 60 * mm}, 40 * mm, 25 * mm, 0.3),
                                       make_ellipse({150 * mm, 60 * mm}, 10 * mm, 10 * mm, 0.0)});
-  area = (100 * 10 + kPi * 25) * mm * mm + (kPi * 40 * 25 - kPi * 100) * mm * mm;
+  area = (100 * 10 + std::numbers::pi * 25) * mm * mm +
+         (std::numbers::pi * 40 * 25 - std::numbers::pi * 100) * mm * mm;
   return make_union({strip, plate});
 }
 
@@ -86,7 +85,8 @@ TEST(Stencil, PatternsAreClippedToTheFrame) {
   const auto strip = make_strip({{0.1, 0.1}, {0.5, 0.1}}, 0.01);
   const auto loops = trace_outlines(*strip, {Vec2::Zero(), Vec2(0.3, 0.2)}, 0.25e-3);
   ASSERT_EQ(loops.size(), 1u);
-  const double expected = 0.2 * 0.01 + kPi * 0.005 * 0.005 / 2.0;  // half a cap at x = 0.1
+  const double expected =
+      0.2 * 0.01 + std::numbers::pi * 0.005 * 0.005 / 2.0;  // half a cap at x = 0.1
   EXPECT_NEAR(signed_area(loops[0]) / expected, 1.0, 1e-3);
 }
 

@@ -87,6 +87,13 @@ struct RunResult {
   int unsettled = 0;         // of them, ended unconverged or at a saddle (in no branch)
 };
 
+// An end state worth keeping, listing as a branch or carrying to a finer grid: converged, within
+// the budget, and a minimum wherever the stability check ran.
+inline bool settled(const RunResult& r) {
+  return r.solve.converged && !r.solve.diverged && !r.solve.saddle && !r.out_of_time &&
+         (r.stability.stable || !r.stability.checked);
+}
+
 // One stable form found by exploring, with the first release that ended in it.
 struct Branch {
   RunResult run;              // that release's result (its own branches empty)
