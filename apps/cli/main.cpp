@@ -15,6 +15,7 @@
 #include "membra/io/scene.hpp"
 #include "membra/process/multilevel.hpp"
 #include "membra/process/run.hpp"
+#include "membra/process/summary.hpp"
 #include "membra/render/run_outputs.hpp"
 #include "membra/version.hpp"
 #include "membra/view/view_script.hpp"
@@ -119,6 +120,7 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   out.commit();
   if (!quiet) {
     if (!r.levels.empty()) std::cout << membra::levels_summary(r.levels) << "\n";
+    std::cout << membra::form_line(r) << "\n";
     std::cout << r.solve.message << " in " << r.solve.wall_seconds << " s\n"
               << "results in " << out.dir().string()
               << "/ (report.html, final.glb, final.obj, final.ply, report.json"

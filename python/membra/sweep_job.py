@@ -42,6 +42,9 @@ def _measures(report):
         "total_K": curvature.get("total", math.nan),
         "total_K_global": curvature.get("global", {}).get("total", math.nan),
         "classification": curvature.get("global", {}).get("classification"),
+        "quadric": shape.get("quadric", {}).get("classification"),
+        "quadric_k1": shape.get("quadric", {}).get("k1", math.nan),
+        "quadric_k2": shape.get("quadric", {}).get("k2", math.nan),
         "stable": report.get("stability", {}).get("stable"),
     }
 

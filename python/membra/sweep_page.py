@@ -35,7 +35,7 @@ td img { height: 90px; display: block; } .failed { color: #a00; } .note { color:
 """
 
 _UNITS = {"height": "mm", "global_height": "mm", "total_K": "rad", "total_K_global": "rad",
-          "design_error": "%", "wall_seconds": "s"}
+          "quadric_k1": "1/mm", "quadric_k2": "1/mm", "design_error": "%", "wall_seconds": "s"}
 
 
 def _cell(value):
@@ -51,9 +51,9 @@ def write_sweep_page(table, params, out, title):
     """Writes out/report.html for the sweep's `table` (a DataFrame as membra.sweep returns);
     `params` are the varied parameters' columns."""
     out = Path(out)
-    columns = ["id"] + list(params) + ["classification", "height", "global_height", "total_K",
-                                       "total_K_global", "design_error", "converged", "stable",
-                                       "wall_seconds"]
+    columns = ["id"] + list(params) + ["classification", "quadric", "height", "global_height",
+                                       "total_K", "total_K_global", "quadric_k1", "quadric_k2",
+                                       "design_error", "converged", "stable", "wall_seconds"]
     columns = [c for c in columns if c in table.columns and table[c].notna().any()]
     failed = int((table["error"].fillna("") != "").sum())
     lines = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',

@@ -83,6 +83,12 @@ void report_form(const RunResult& r, json& j) {
                 {"bbox_min", mm3(r.shape.bbox_min)},
                 {"bbox_max", mm3(r.shape.bbox_max)},
                 {"form", r.form}};
+  // The whole form's best-fit quadric (docs/measures.md): a bowl's two radii, however it wrinkles.
+  if (r.shape.quadric.valid)
+    j["shape"]["quadric"] = {{"k1", r.shape.quadric.k1 * units::mm},
+                             {"k2", r.shape.quadric.k2 * units::mm},
+                             {"rms", r.shape.quadric.rms / units::mm},
+                             {"classification", r.shape.quadric.classification}};
   j["curvature"] = {{"total", r.curvature.total},
                     {"positive", r.curvature.positive},
                     {"negative", r.curvature.negative},
@@ -161,6 +167,9 @@ void report_branches(const RunResult& r, json& j) {
                              {"total_K", f.curvature.total},
                              {"total_K_global", f.curvature_global.total},
                              {"classification", f.form_global},
+                             {"quadric", f.shape.quadric.classification},
+                             {"quadric_k1", f.shape.quadric.k1 * units::mm},
+                             {"quadric_k2", f.shape.quadric.k2 * units::mm},
                              {"energy", f.elastic_energy + f.bending_energy + f.gravity_energy},
                              {"output", "branches/" + std::to_string(b + 1) + "/"}});
   }
@@ -194,6 +203,11 @@ json report_units() {
       {"shape.global_height", "mm (height of the form averaged over windows 1/8 of the sheet)"},
       {"shape.fold_rms", "mm (rms distance from the window's plane: local folds)"},
       {"shape.fold_max", "mm (largest such distance)"},
+      {"shape.quadric.k1",
+       "1/mm (larger principal curvature of the best-fit quadric; radius 1/k1)"},
+      {"shape.quadric.k2", "1/mm (smaller; a bowl has both > 0, a saddle k2 < 0)"},
+      {"shape.quadric.rms", "mm (the particles' rms distance from that quadric)"},
+      {"shape.quadric.classification", "text (flat, cylindrical, synclastic or anticlastic)"},
       {"curvature.total", "rad (sum of interior angle defects = integral of K dA)"},
       {"curvature.positive", "rad"},
       {"curvature.negative", "rad"},
@@ -237,6 +251,8 @@ json report_units() {
       {"branches.total_K", "rad (as curvature.total)"},
       {"branches.total_K_global", "rad (as curvature.global.total)"},
       {"branches.energy", "J (as energy)"},
+      {"branches.quadric_k1", "1/mm (as shape.quadric.k1)"},
+      {"branches.quadric_k2", "1/mm (as shape.quadric.k2)"},
       {"branches.releases", "which releases ended in the form (0: the scene's own imperfection)"},
       {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};
 }

@@ -153,6 +153,7 @@ ShapeSummary summarize_shape(const Points& x, const Points& paper) {
   s.global_height = height_over_best_plane(near.mean);
   s.fold_rms = std::sqrt(near.fold.squaredNorm() / static_cast<double>(x.cols()));
   s.fold_max = near.fold.maxCoeff();
+  s.quadric = fit_quadric(x, paper);
   return s;
 }
 

@@ -1,6 +1,8 @@
 #include "membra/process/summary.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "membra/measure/hole_edge.hpp"
 #include "membra/measure/stress_tensor.hpp"
@@ -75,6 +77,25 @@ void summarize_run(RunResult& r, const std::function<double(const Vec2&)>& curva
   summarize_form(r);
   if (r.curvature_map) summarize_curvature_map(r, curvature_field);
   if (!r.features.empty()) summarize_features(r);
+}
+
+std::string form_line(const RunResult& r) {
+  const QuadricFit& q = r.shape.quadric;
+  char buf[200];
+  const double mm = 1e-3;
+  std::snprintf(buf, sizeof buf, "form: %.1f mm high", r.shape.height / mm);
+  std::string line = buf;
+  if (!q.valid) return line;
+  // A radius of a metre or more reads as straight: the classification already says "flat" or
+  // "cylindrical" then, and a number in kilometres only distracts.
+  auto radius = [&](double k) {
+    if (!(std::abs(k) * 1.0 > 1.0)) return std::string("straight");
+    std::snprintf(buf, sizeof buf, "%.0f mm", 1.0 / k / mm);
+    return std::string(buf);
+  };
+  std::snprintf(buf, sizeof buf, " (the sheet %.1f mm rms off it)", q.rms / mm);
+  return line + ", a " + q.classification + " quadric of radii " + radius(q.k1) + " and " +
+         radius(q.k2) + buf;
 }
 
 }  // namespace membra

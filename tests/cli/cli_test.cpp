@@ -100,6 +100,8 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   EXPECT_GT(report["stress"]["max"].get<double>(), 0.0);  // a hanging sheet is in tension
   EXPECT_GT(report["strain"]["max"].get<double>(), 0.0);
   EXPECT_EQ(report["force"]["max"].get<double>(), r.stress.max_force);
+  EXPECT_EQ(report["shape"]["quadric"]["k1"].get<double>(), r.shape.quadric.k1 * 1e-3);  // 1/mm
+  EXPECT_EQ(report["shape"]["quadric"]["classification"], r.shape.quadric.classification);
   for (const char* key :
        {"residual", "energy", "shape.height", "wall_seconds", "curvature.total", "stress.max"})
     EXPECT_TRUE(report["units"].contains(key)) << key;
@@ -246,6 +248,7 @@ TEST_F(Cli, MultilevelReportsEveryGrid) {
                               (dir / "run").string());
   ASSERT_EQ(o.code, 0) << o.text;
   EXPECT_NE(o.text.find("multilevel: 11x11 path"), std::string::npos) << o.text;
+  EXPECT_NE(o.text.find("form: "), std::string::npos) << o.text;  // height and quadric
   std::ifstream in(dir / "run" / "report.json");
   const json j = json::parse(in);
   ASSERT_EQ(j["levels"].size(), 2u) << j.dump();

@@ -2,6 +2,7 @@
 // Summaries of a form: how far it rises out of its best-fit plane, its bounding box, and how
 // much of that rise is the global shape and how much local folding.
 #include "membra/core/vec.hpp"
+#include "membra/measure/quadric_fit.hpp"
 
 namespace membra {
 
@@ -17,11 +18,13 @@ struct ShapeSummary {
   double global_height = 0.0;  // `height` of the global form, m
   double fold_rms = 0.0;       // rms of the particles' folds, m
   double fold_max = 0.0;       // largest fold, m
+  QuadricFit quadric;          // the whole form's best-fit quadric (quadric_fit.hpp)
 };
 
 // Shape summary of a point set (3 x N, N >= 1). The best-fit plane makes `height` independent of
 // how the released sheet happens to lie in space. `paper`, when given (3 x N, the particles'
-// positions in the flat sheet), defines the neighbourhoods of the global/fold split.
+// positions in the flat sheet), defines the neighbourhoods of the global/fold split and the
+// parametrisation of the quadric fit.
 ShapeSummary summarize_shape(const Points& x, const Points& paper = Points());
 
 // The global form: each particle moved to the linear least-squares fit of the positions over its
