@@ -81,21 +81,23 @@ void summarize_run(RunResult& r, const std::function<double(const Vec2&)>& curva
 
 std::string form_line(const RunResult& r) {
   const QuadricFit& q = r.shape.quadric;
-  char buf[200];
   const double mm = 1e-3;
+  char buf[200];
   std::snprintf(buf, sizeof buf, "form: %.1f mm high", r.shape.height / mm);
-  std::string line = buf;
+  const std::string line = buf;
   if (!q.valid) return line;
+  if (q.classification == "folded")
+    return line + ", rolled or folded past what a quadric describes";
   // A radius of a metre or more reads as straight: the classification already says "flat" or
   // "cylindrical" then, and a number in kilometres only distracts.
-  auto radius = [&](double k) {
-    if (!(std::abs(k) * 1.0 > 1.0)) return std::string("straight");
+  auto radius = [&](double k) {  // k in 1/m
+    if (!(std::abs(k) > 1.0)) return std::string("straight");
     std::snprintf(buf, sizeof buf, "%.0f mm", 1.0 / k / mm);
     return std::string(buf);
   };
+  const std::string r1 = radius(q.k1), r2 = radius(q.k2);
   std::snprintf(buf, sizeof buf, " (the sheet %.1f mm rms off it)", q.rms / mm);
-  return line + ", a " + q.classification + " quadric of radii " + radius(q.k1) + " and " +
-         radius(q.k2) + buf;
+  return line + ", a " + q.classification + " quadric of radii " + r1 + " and " + r2 + buf;
 }
 
 }  // namespace membra
