@@ -12,8 +12,8 @@ namespace membra {
 // scene's last curvature_map step (1/m^2 at a paper position), empty when it has none.
 void summarize_run(RunResult& r, const std::function<double(const Vec2&)>& curvature_field);
 
-// One line for a person: the form's height and its best-fit quadric, e.g. "form: 77.2 mm high,
-// a synclastic quadric of radii 112 and 174 mm (the sheet 3.1 mm rms off it)".
+// One line for a person: the form's height and its best-fit quadric, e.g. "form: 77.2 mm high, a
+// synclastic quadric of radii 112 mm and 174 mm (the sheet 10.8 mm rms off it)".
 std::string form_line(const RunResult& r);
 
 }  // namespace membra
