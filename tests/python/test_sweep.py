@@ -20,14 +20,15 @@ PHYSICS = ["status", "converged", "height", "global_height", "total_K", "total_K
            "classification"]
 
 
-def eight_scenes(root):
-    """8 small releases: the ellipse's two radii over 4 x 2 values."""
+def four_scenes(root):
+    """4 small releases: the ellipse's two radii over 2 x 2 values (each tiny run costs about
+    a second of output work, so the sweep tests keep to a few)."""
     return {
-        "name": "eight",
+        "name": "four",
         "scene": str(root / "examples" / "synclastic_ellipse.json"),
         "set": {"sheet.resolution": [11, 11], "simulation.solver": "newton",
                 "output.image_size": [320, 240]},
-        "grid": {"protocol.1.pattern.union.0.ellipse.radii.1": [50, 60, 70, 80],
+        "grid": {"protocol.1.pattern.union.0.ellipse.radii.1": [50, 80],
                  "protocol.1.pattern.union.0.ellipse.radii.0": [100, 120]},
     }
 
@@ -91,8 +92,8 @@ def physics(table):
 
 
 def test_the_sweep_file_expands_in_a_fixed_order(root):
-    jobs = expand(load_sweep(eight_scenes(root)))
-    assert [j["id"] for j in jobs] == [f"{i:04d}" for i in range(8)]
+    jobs = expand(load_sweep(four_scenes(root)))
+    assert [j["id"] for j in jobs] == [f"{i:04d}" for i in range(4)]
     assert jobs[0]["params"] == {"protocol.1.pattern.union.0.ellipse.radii.1": 50,
                                  "protocol.1.pattern.union.0.ellipse.radii.0": 100}
     assert jobs[1]["params"]["protocol.1.pattern.union.0.ellipse.radii.0"] == 120
@@ -111,7 +112,7 @@ def test_a_bad_sweep_file_names_its_field(tmp_path):
 
 
 def test_a_sweep_on_a_real_scheduler_survives_a_killed_worker(root, tmp_path, cluster):
-    spec = eight_scenes(root)
+    spec = four_scenes(root)
     killed = []
 
     def kill_one_worker_after_first_row():
@@ -135,37 +136,37 @@ def test_a_sweep_on_a_real_scheduler_survives_a_killed_worker(root, tmp_path, cl
     finally:
         sweeps._progress = original
     assert killed
-    assert len(table) == 8 and (table["error"] == "").all(), table["error"].tolist()
+    assert len(table) == 4 and (table["error"] == "").all(), table["error"].tolist()
     assert (Path(tmp_path / "a" / "results.csv")).is_file()
     assert (Path(tmp_path / "a" / "contact_sheet.png")).stat().st_size > 10_000
     # The sweep's page: a sortable table, one row per scene with a thumbnail linking to the
     # scene's own report.html.
     page = (tmp_path / "a" / "report.html").read_text()
-    assert page.count("<tr>") == 8 + 1 and "th.addEventListener('click'" in page
-    for i in range(8):
+    assert page.count("<tr>") == 4 + 1 and "th.addEventListener('click'" in page
+    for i in range(4):
         assert f'<a href="scenes/{i:04d}/report.html"><img src="scenes/{i:04d}/curvature.png"' in page
         assert (tmp_path / "a" / "scenes" / f"{i:04d}" / "report.html").is_file()
     # The same physics on one local worker, from scratch.
     alone = membra.sweep(spec, out=tmp_path / "b", workers=1)
     pd.testing.assert_frame_equal(physics(table), physics(alone))
-    for i in range(8):
+    for i in range(4):
         a = (tmp_path / "a" / "scenes" / f"{i:04d}" / "final.obj").read_bytes()
         b = (tmp_path / "b" / "scenes" / f"{i:04d}" / "final.obj").read_bytes()
         assert a == b, i
 
 
 def test_a_failed_scene_is_a_row_and_a_resumed_sweep_skips_finished_ones(root, tmp_path):
-    spec = eight_scenes(root)
-    spec["grid"] = {"protocol.1.pattern.union.0.ellipse.radii.1": [50, 60, 70, 80]}
+    spec = four_scenes(root)
+    spec["grid"] = {"protocol.1.pattern.union.0.ellipse.radii.1": [50, 65, 80]}
     spec["list"] = [{"simulation.solver": "newton"}, {"simulation.solver": "nonsense"}]
     out = tmp_path / "s"
     first = membra.sweep(spec, out=out, workers=2, contact_sheet=False)
     failed = first[first["error"] != ""]
-    assert len(failed) == 4 and failed["error"].str.contains("/simulation/solver").all()
+    assert len(failed) == 3 and failed["error"].str.contains("/simulation/solver").all()
     assert (first[first["error"] == ""]["converged"]).all()
     # Interrupt a sweep: remove one finished row, as if the run had stopped before it.
     (out / "scenes" / "0002" / "row.json").unlink()
-    stamps = {i: (out / "scenes" / f"{i:04d}" / "row.json").stat().st_mtime_ns for i in (0, 1, 3)}
+    stamps = {i: (out / "scenes" / f"{i:04d}" / "row.json").stat().st_mtime_ns for i in (0, 1)}
     again = membra.sweep(spec, out=out, workers=1, contact_sheet=False)
     for i, stamp in stamps.items():  # finished rows were not run again
         assert (out / "scenes" / f"{i:04d}" / "row.json").stat().st_mtime_ns == stamp
@@ -174,7 +175,7 @@ def test_a_failed_scene_is_a_row_and_a_resumed_sweep_skips_finished_ones(root, t
 
 
 def test_the_cli_runs_a_sweep_file(root, cli, tmp_path):
-    spec = eight_scenes(root)
+    spec = four_scenes(root)
     spec["grid"] = {"protocol.1.pattern.union.0.ellipse.radii.1": [50, 80]}
     file = tmp_path / "two.sweep.json"
     file.write_text(json.dumps(spec))
