@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
+
+#include "membra/measure/paper_windows.hpp"
 
 namespace membra {
 
@@ -56,43 +56,13 @@ Vec3 linear_fit_at(const Points& x, const Points& paper, Eigen::Index p,
   return mean + b * a.inverse() * (paper.col(p).head<2>() - centre);
 }
 
-Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double radius,
-                                    double size) {
+Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double radius) {
   const auto n = x.cols();
-  // A window holds about n pi / 256 particles (radius size/16); a few hundred describe its mean
-  // and plane as well as all of them, so big sheets take every stride-th one (index order
-  // within a bucket is row order on the grid: an even thinning).
-  const double expected =
-      static_cast<double>(n) * radius * radius * std::numbers::pi / (size * size);
-  const size_t stride = std::max<size_t>(1, static_cast<size_t>(expected / 400.0));
-  const Vec3 lo = paper.rowwise().minCoeff();
-  auto cell = [&](const Vec3& p) {
-    return std::pair<long, long>{std::lround(std::floor((p.x() - lo.x()) / radius)),
-                                 std::lround(std::floor((p.y() - lo.y()) / radius))};
-  };
-  auto key = [](long i, long j) { return (i << 32) ^ (j & 0xffffffffL); };
-  std::unordered_map<long, std::vector<Eigen::Index>> buckets;
-  for (Eigen::Index p = 0; p < n; ++p) {
-    const auto [i, j] = cell(paper.col(p));
-    buckets[key(i, j)].push_back(p);
-  }
+  const PaperWindows windows(paper, radius);
   Neighbourhoods out{Points(3, n), Eigen::VectorXd::Zero(n)};
-  const double r2 = radius * radius;
   std::vector<Eigen::Index> near;
   for (Eigen::Index p = 0; p < n; ++p) {
-    const auto [i, j] = cell(paper.col(p));
-    near.clear();
-    for (long dj = -1; dj <= 1; ++dj)
-      for (long di = -1; di <= 1; ++di) {
-        const auto it = buckets.find(key(i + di, j + dj));
-        if (it == buckets.end()) continue;
-        const std::vector<Eigen::Index>& bucket = it->second;
-        for (size_t k = 0; k < bucket.size(); k += stride) {
-          const Eigen::Index q = bucket[k];
-          if ((paper.col(q) - paper.col(p)).head<2>().squaredNorm() <= r2) near.push_back(q);
-        }
-      }
-    if (near.empty()) near.push_back(p);
+    windows.collect(p, near);
     Vec3 mean = Vec3::Zero();
     for (Eigen::Index q : near) mean += x.col(q);
     mean /= static_cast<double>(near.size());
@@ -106,38 +76,12 @@ Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double
   return out;
 }
 
-// The grid spacing along one paper axis: the median gap between distinct coordinates (a sheet is
-// a grid on the paper; holes and masks remove particles, not columns, and the median ignores a
-// stray gap). Coordinates closer than 1e-9 of the extent are one column.
-double axis_spacing(const Eigen::RowVectorXd& coordinate) {
-  std::vector<double> c(coordinate.data(), coordinate.data() + coordinate.size());
-  std::sort(c.begin(), c.end());
-  const double same = 1e-9 * std::max(c.back() - c.front(), 1e-300);
-  std::vector<double> gaps;
-  for (size_t i = 1; i < c.size(); ++i)
-    if (c[i] - c[i - 1] > same) gaps.push_back(c[i] - c[i - 1]);
-  if (gaps.empty()) return 0.0;
-  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
-  return gaps[gaps.size() / 2];
-}
-
 }  // namespace
-
-// The window radius of the global/fold split: 1/16 of the paper's larger side, and at least 1.75
-// of the larger grid spacing, so that every window holds a particle's eight neighbours (the
-// diagonal ones too, on cells that are not square) and nothing depends on how a spacing equal to
-// the radius rounds (0: no particles).
-double window_radius(const Points& x, const Points& paper) {
-  if (x.cols() == 0 || paper.cols() != x.cols()) return 0.0;
-  const Vec3 extent = paper.rowwise().maxCoeff() - paper.rowwise().minCoeff();
-  const double spacing = std::max(axis_spacing(paper.row(0)), axis_spacing(paper.row(1)));
-  return std::max(std::max(extent.x(), extent.y()) / 16.0, 1.75 * spacing);
-}
 
 Points global_form(const Points& x, const Points& paper) {
   const double radius = window_radius(x, paper);
   if (!(radius > 0.0)) return Points();
-  return paper_neighbourhoods(x, paper, radius, 16.0 * radius).mean;
+  return paper_neighbourhoods(x, paper, radius).mean;
 }
 
 ShapeSummary summarize_shape(const Points& x, const Points& paper) {
@@ -149,7 +93,7 @@ ShapeSummary summarize_shape(const Points& x, const Points& paper) {
   s.height = height_over_best_plane(x, &s.normal);
   const double radius = window_radius(x, paper);
   if (!(radius > 0.0)) return s;
-  const Neighbourhoods near = paper_neighbourhoods(x, paper, radius, 16.0 * radius);
+  const Neighbourhoods near = paper_neighbourhoods(x, paper, radius);
   s.global_height = height_over_best_plane(near.mean);
   s.fold_rms = std::sqrt(near.fold.squaredNorm() / static_cast<double>(x.cols()));
   s.fold_max = near.fold.maxCoeff();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "membra/measure/global_curvature.hpp"
 #include "membra/measure/hole_edge.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/forces.hpp"
@@ -24,12 +25,8 @@ void summarize_form(RunResult& r) {
   r.curvature = gaussian_curvature(s.x, mem.sheet.triangles);
   smooth_density_on_grid(mem.sheet.grid, r.curvature);
   r.form = classify_form(r.curvature);
-  const Points global = global_form(s.x, m.reference);
-  if (global.cols() == s.x.cols()) {
-    r.curvature_global = gaussian_curvature(global, mem.sheet.triangles);
-    smooth_density_on_grid(mem.sheet.grid, r.curvature_global);
-    r.form_global = classify_form(r.curvature_global);
-  }
+  r.curvature_global = global_curvature(s.x, m.reference, mem.sheet.triangles);
+  if (!r.curvature_global.interior.empty()) r.form_global = classify_form(r.curvature_global);
   r.stress = spring_stress(m, s.x, mem.sheet.material.thickness);
   // A small residual does not tell a minimum from a soft saddle.
   r.stability = check_stability(m, s.x, mem.sheet.stiffness.stretch);

@@ -1,0 +1,115 @@
+// The global form's Gaussian curvature: wrinkles and waves average out of its positive and
+// negative parts, its total is the global form's own.
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "membra/measure/global_curvature.hpp"
+#include "membra/measure/paper_windows.hpp"
+#include "membra/measure/shape.hpp"
+#include "membra/model/sheet.hpp"
+
+namespace membra {
+namespace {
+
+// A 200 mm sheet of n x n particles shaped by z(u, v) (u, v from its centre, m).
+template <typename Height>
+Points shaped(const Sheet& s, Height z) {
+  Points x = s.model.reference;
+  for (Eigen::Index p = 0; p < x.cols(); ++p) x(2, p) = z(x(0, p) - 0.1, x(1, p) - 0.1);
+  return x;
+}
+
+// A bowl (z = (x^2 + y^2) / 2R) and a saddle (z = (x^2 - y^2) / 2R), each corrugated by
+// wrinkles along x, 10 mm apart and 1 mm high, on a 200 mm sheet: the raw angle defects are the
+// wrinkles' (both signs alike, "folded"); the global form's read as the bowl and the saddle.
+std::pair<std::string, std::string> corrugated_forms(double sign) {
+  const Sheet s = build_sheet({0.2, 0.2, 81, 81}, SheetOptions{});
+  const double r = 0.15, a = 1.0e-3, k = 2.0 * std::numbers::pi / 0.01;
+  const Points x = shaped(s, [&](double u, double v) {
+    return (u * u + sign * v * v) / (2.0 * r) + a * std::sin(k * v);
+  });
+  GaussianCurvature raw = gaussian_curvature(x, s.triangles);
+  smooth_density_on_grid(s.grid, raw);
+  const GaussianCurvature global = global_curvature(x, s.model.reference, s.triangles);
+  std::printf("%s: raw +%.2f %.2f, global +%.2f %.2f rad\n", sign > 0 ? "bowl" : "saddle",
+              raw.positive, raw.negative, global.positive, global.negative);
+  return {classify_form(raw), classify_form(global)};
+}
+
+TEST(GlobalCurvature, ACorrugatedBowlIsSynclasticAndACorrugatedSaddleAnticlastic) {
+  const auto [bowl_raw, bowl_global] = corrugated_forms(+1.0);
+  EXPECT_EQ(bowl_global, "synclastic");
+  EXPECT_NE(bowl_raw, "synclastic");
+  const auto [saddle_raw, saddle_global] = corrugated_forms(-1.0);
+  EXPECT_EQ(saddle_global, "anticlastic");
+  EXPECT_NE(saddle_raw, "anticlastic");
+}
+
+// A bowl and a saddle (R = 150 mm) under an egg-crate of waves 50 mm long and up to 14 mm high,
+// tapered to nothing at the edges (so the totals stay the bowl's and the saddle's: +1.19 and
+// -1.15 rad). The waves, bumps and dips of both signs of curvature, are twice as long as the
+// global form's window is wide, so the global form keeps a good part of them: averaged over the
+// form's own window the density reads "folded" both times (+3.43 / -2.29 rad on the bowl); over
+// the wider window of global_curvature the bumps and dips cancel (+1.97 / -0.77) and the bowl
+// reads as a bowl, the saddle as a saddle. (Shorter waves average out of the global form itself,
+// the corrugation above; with waves 18 mm high both averages read "folded".)
+std::pair<GaussianCurvature, GaussianCurvature> egg_crate(double sign) {
+  const Sheet s = build_sheet({0.2, 0.2, 65, 65}, SheetOptions{});
+  const double k = 2.0 * std::numbers::pi / 0.05;
+  const auto taper = [](double u) { return std::pow(std::cos(std::numbers::pi * u / 0.2), 2); };
+  const Points x = shaped(s, [&](double u, double v) {
+    return (u * u + sign * v * v) / 0.3 +
+           14e-3 * std::sin(k * u) * std::sin(k * v) * taper(u) * taper(v);
+  });
+  const Points& paper = s.model.reference;
+  GaussianCurvature narrow = gaussian_curvature(global_form(x, paper), s.triangles);
+  average_density_over_windows(paper, window_radius(x, paper), narrow);
+  const GaussianCurvature wide = global_curvature(x, paper, s.triangles);
+  std::printf("%s: form's window +%.2f %.2f (%s), twice it +%.2f %.2f (%s), total %.3f rad\n",
+              sign > 0 ? "bowl" : "saddle", narrow.positive, narrow.negative,
+              classify_form(narrow).c_str(), wide.positive, wide.negative,
+              classify_form(wide).c_str(), wide.total);
+  return {narrow, wide};
+}
+
+TEST(GlobalCurvature, WavesAsLongAsTheWindowCancelOutOfABowlAndASaddle) {
+  const auto [bowl_narrow, bowl] = egg_crate(+1.0);
+  EXPECT_EQ(classify_form(bowl_narrow), "folded");
+  EXPECT_EQ(classify_form(bowl), "synclastic");
+  // The averaging moves the density, not the angle defects: the total is the global form's.
+  EXPECT_DOUBLE_EQ(bowl.total, bowl_narrow.total);
+  const auto [saddle_narrow, saddle] = egg_crate(-1.0);
+  EXPECT_EQ(classify_form(saddle_narrow), "folded");
+  EXPECT_EQ(classify_form(saddle), "anticlastic");
+}
+
+// On a sphere the density is 1/R^2 everywhere, and an average of a constant is the constant:
+// within 3 % at every interior vertex a window away from the rim.
+TEST(GlobalCurvature, ASphereKeepsItsCurvature) {
+  const Sheet s = build_sheet({0.2, 0.2, 41, 41}, SheetOptions{});
+  const double r = 0.3;
+  const Points x =
+      shaped(s, [&](double u, double v) { return r - std::sqrt(r * r - u * u - v * v); });
+  const GaussianCurvature k = global_curvature(x, s.model.reference, s.triangles);
+  ASSERT_EQ(k.density.size(), static_cast<size_t>(x.cols()));
+  int checked = 0;
+  for (Eigen::Index p = 0; p < x.cols(); ++p) {
+    const double u = s.model.reference(0, p) - 0.1, v = s.model.reference(1, p) - 0.1;
+    if (std::max(std::abs(u), std::abs(v)) > 0.05) continue;
+    EXPECT_NEAR(k.density[static_cast<size_t>(p)] * r * r, 1.0, 0.03) << p;
+    ++checked;
+  }
+  EXPECT_GT(checked, 300);
+  EXPECT_EQ(classify_form(k), "synclastic");
+}
+
+TEST(GlobalCurvature, NoPaperNoCurvature) {
+  const Sheet s = build_sheet({0.2, 0.2, 5, 5}, SheetOptions{});
+  EXPECT_TRUE(global_curvature(s.model.reference, Points(), s.triangles).interior.empty());
+}
+
+}  // namespace
+}  // namespace membra
