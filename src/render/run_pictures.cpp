@@ -97,7 +97,8 @@ void stage_global_form(const RunResult& r, const PictureOptions& opts, const Cam
   auto [lo, hi] =
       symmetric_percentile_range(interior.empty() ? k : interior, kCurvaturePercentile, 1e-6);
   if (opts.curvature_range.size() == 2) lo = opts.curvature_range[0], hi = opts.curvature_range[1];
-  const Legend legend{"Global form: Gaussian curvature", "1/mm^2", lo, hi};
+  const Legend legend{"Global form: Gaussian curvature, averaged over 1/4 of the sheet across",
+                      "1/mm^2", lo, hi};
   add_png(out, "curvature_global.png",
           renderer.render(global, mesh.triangles, colorize(k, lo, hi), camera, &legend));
 }
