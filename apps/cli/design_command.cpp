@@ -34,11 +34,13 @@ int cmd_design(const DesignArgs& args) {
       std::cerr << line;
       return;
     }
-    std::snprintf(line, sizeof line,
-                  "  %3d  rms %6.2f %%  max %6.2f %%  resin %4.0f %%  %3d pieces  %6.1f s%s%s%s\n",
-                  it.index, it.rms_error, it.max_error, 100.0 * it.resin_share, it.pieces,
-                  it.seconds, it.best ? "  best" : "", it.note.empty() ? "" : "  ",
-                  it.note.c_str());
+    char scale[32] = "";
+    if (it.scale != 1.0) std::snprintf(scale, sizeof scale, "  densities x%.2f", it.scale);
+    std::snprintf(
+        line, sizeof line,
+        "  %3d  rms %6.2f %%  max %6.2f %%  resin %4.0f %%  %3d pieces  %6.1f s%s%s%s%s\n",
+        it.index, it.rms_error, it.max_error, 100.0 * it.resin_share, it.pieces, it.seconds, scale,
+        it.best ? "  best" : "", it.note.empty() ? "" : "  ", it.note.c_str());
     std::cerr << line;
   });
   const std::string note = stage_design_outputs(r, out);

@@ -41,9 +41,10 @@ def design(target, out=None, progress=None, base_dir=None, cache=True):
     target: a design file path, or its content as a dict (docs/inverse_design.md).
     out: if given, the folder to write the outputs to.
     progress: None or a callable taking a dict per forward simulation {"index", "stage",
-        "rms_error", "max_error", "resin_share", "pieces", "seconds", "best", "note",
-        "objective", "gradient_norm"}; with "method": "adjoint" the density iterates have stage
-        "density" (rms_error: to the particles' own target points) and the stencil "stencil".
+        "rms_error", "max_error", "resin_share", "pieces", "density_scale", "seconds", "best",
+        "note", "objective", "gradient_norm"}; with "method": "adjoint" the density iterates have
+        stage "density" (rms_error: to the particles' own target points) and the stencil trials
+        "stencil" (density_scale: the multiple of the designed densities laid out).
     cache: keep the adjoint method's stencil calibration in $MEMBRA_CACHE_DIR (else
         ~/.cache/membra) and read it back for later designs on the same sheet, as
         `membra design` does; False measures it every time.

@@ -30,6 +30,7 @@ py::dict iteration_dict(const DesignIteration& it) {
   d["max_error"] = it.max_error;
   d["resin_share"] = it.resin_share;
   d["pieces"] = it.pieces;
+  d["density_scale"] = it.scale;
   d["seconds"] = it.seconds;
   d["best"] = it.best;
   d["note"] = it.note;

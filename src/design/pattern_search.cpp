@@ -57,15 +57,8 @@ Evaluation Search::evaluate(const DensityParameters& d) const {
 }
 
 bool Search::record(const DensityParameters& d, Evaluation&& e, double seconds) {
-  DesignIteration it;
-  it.index = n_++;
+  DesignIteration it = trial_iteration(e, n_++, seconds);
   it.parameters = d;
-  it.rms_error = e.rms;
-  it.max_error = e.max;
-  it.resin_share = e.stencil.resin_share;
-  it.pieces = e.stencil.pieces;
-  it.seconds = seconds;
-  it.note = e.note;
   // Only an equilibrium is a prediction: an unconverged state competes only while no converged
   // one exists.
   const bool converged = e.note.empty();

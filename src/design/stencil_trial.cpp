@@ -47,6 +47,18 @@ StencilTrial try_stencil(const DesignSpec& spec, const TargetSurface& target,
   return e;
 }
 
+DesignIteration trial_iteration(const StencilTrial& trial, int index, double seconds) {
+  DesignIteration it;
+  it.index = index;
+  it.rms_error = trial.rms;
+  it.max_error = trial.max;
+  it.resin_share = trial.stencil.resin_share;
+  it.pieces = trial.stencil.pieces;
+  it.seconds = seconds;
+  it.note = trial.note;
+  return it;
+}
+
 void adopt_stencil(StencilTrial&& trial, DesignResult& r) {
   r.scene = std::move(trial.scene);
   r.stencil = std::move(trial.stencil);

@@ -35,6 +35,7 @@ nlohmann::json iteration(const DesignIteration& it) {
           {"max_error", number(it.max_error)},
           {"resin_share", it.resin_share},
           {"pieces", it.pieces},
+          {"density_scale", it.scale},
           {"seconds", it.seconds},
           {"best", it.best},
           {"note", it.note},

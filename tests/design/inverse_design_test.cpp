@@ -107,6 +107,40 @@ INSTANTIATE_TEST_SUITE_P(Targets, AdjointKinds,
                                            json{{"cylinder", {{"size", 150}, {"height", 20}}}}),
                          [](const auto& param_info) { return param_info.param.begin().key(); });
 
+// Stage 3's stencil trials: the calibrated stencil and its neighbours with the densities scaled
+// by 0.85 and 1.15, each simulated from flat; the design is the best that settled, and the
+// report's stencil entries say which scale each was.
+TEST(InverseDesign, TheAdjointKeepsTheBestOfItsStencilTrials) {
+  json design = small_design({{"saddle", {{"size", 150}, {"height", 15}}}}, 4);
+  design["design"].update({{"method", "adjoint"}, {"density_cell", 25}, {"stencil_trials", 3}});
+  const DesignResult d = run_design(parse_design(design));
+  std::vector<const DesignIteration*> stencils;
+  for (const DesignIteration& it : d.history)
+    if (it.stage == "stencil") stencils.push_back(&it);
+  ASSERT_EQ(stencils.size(), 3u);
+  EXPECT_EQ(stencils[0]->scale, 1.0);
+  EXPECT_EQ(stencils[1]->scale, 0.85);
+  EXPECT_EQ(stencils[2]->scale, 1.15);
+  EXPECT_TRUE(stencils[0]->best);  // the first is the best so far when it is made
+  // More resin, more pieces or larger ones: the shares follow the scale.
+  EXPECT_LT(stencils[1]->resin_share, stencils[0]->resin_share);
+  EXPECT_GT(stencils[2]->resin_share, stencils[0]->resin_share);
+  double best = std::numeric_limits<double>::infinity();
+  for (const DesignIteration* it : stencils)
+    if (it->note.empty()) best = std::min(best, it->rms_error);
+  ASSERT_TRUE(std::isfinite(best)) << "no stencil settled";
+  EXPECT_DOUBLE_EQ(d.rms_error, best);
+  EXPECT_TRUE(stencils.back()->best == (stencils.back()->rms_error == best));
+  // The scene written is the chosen stencil's, whichever trial it was.
+  const RunResult again = run_scene(parse_scene(design_scene(d.spec, d.stencil)));
+  ASSERT_EQ(again.prepared.membrane.state.x.cols(), d.run.prepared.membrane.state.x.cols());
+  EXPECT_LE(
+      (again.prepared.membrane.state.x - d.run.prepared.membrane.state.x).cwiseAbs().maxCoeff(),
+      1e-6 * 0.2);
+  std::printf("stencils: %.2f %%, %.2f %%, %.2f %% -> %.2f %%\n", stencils[0]->rms_error,
+              stencils[1]->rms_error, stencils[2]->rms_error, d.rms_error);
+}
+
 TEST(InverseDesign, TheStencilsSceneReproducesTheReportedForm) {
   const DesignResult d =
       run_design(parse_design(small_design({{"cap", {{"diameter", 160}, {"height", 24}}}}, 2)));
@@ -163,6 +197,14 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   j["design"]["flattening"] = "lscm";  // conformal or projection
   EXPECT_NE(error_of(j).find("/design/flattening"), std::string::npos);
   j["design"].erase("flattening");
+  for (int trials : {0, 6}) {  // one to five stencils
+    j["design"]["stencil_trials"] = trials;
+    EXPECT_NE(error_of(j).find("/design/stencil_trials"), std::string::npos) << trials;
+  }
+  j["design"]["stencil_trials"] = 2;
+  EXPECT_EQ(parse_design(j).stencil_trials, 2);
+  j["design"].erase("stencil_trials");
+  EXPECT_EQ(parse_design(j).stencil_trials, 5);
   j["resin"]["bilayer"] = true;  // not placed by the adjoint yet
   EXPECT_NE(error_of(j).find("/resin/bilayer"), std::string::npos);
   j["resin"].erase("bilayer");

@@ -39,6 +39,7 @@ struct DesignIteration {
   double resin_share = 0.0;                 // of the sheet's area on the frame
   int pieces = 0;
   double seconds = 0.0;  // of this forward simulation
+  double scale = 1.0;    // adjoint stencils: the multiple of the designed densities laid out
   bool best = false;     // the best so far when it was made
   std::string note;      // e.g. "did not converge"
 };

@@ -35,6 +35,9 @@ struct DesignSpec {
   // adjoint, stage 1: how the target is laid over the frame, "conformal" (its conformal
   // flattening) or "projection" (straight down onto its footprint); target_correspondence.hpp.
   std::string flattening = "conformal";
+  // adjoint, stage 3: stencils simulated from flat — the calibrated one, then the wanted
+  // densities scaled by 0.85, 1.15, 0.7, 1.3 — the best that settles is the design's.
+  int stencil_trials = 5;
   int evaluations = 24;   // forward simulations (adjoint: forward + adjoint solves) at most
   double budget = 900.0;  // s of wall time at most
   Solver solver = Solver::newton;
