@@ -1,6 +1,7 @@
 #include "membra/measure/global_curvature.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "membra/measure/paper_windows.hpp"
 #include "membra/measure/shape.hpp"
@@ -8,6 +9,10 @@
 namespace membra {
 
 void average_density_over_windows(const Points& paper, double radius, GaussianCurvature& k) {
+  if (k.interior.size() != static_cast<size_t>(paper.cols()) || !(radius > 0.0))
+    throw std::invalid_argument(
+        "average_density_over_windows: one paper position per vertex "
+        "and a radius > 0");
   const PaperWindows windows(paper, radius);
   std::vector<double> out(k.density.size(), 0.0);
   std::vector<Eigen::Index> near;

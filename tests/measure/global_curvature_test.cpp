@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -109,6 +110,9 @@ TEST(GlobalCurvature, ASphereKeepsItsCurvature) {
 TEST(GlobalCurvature, NoPaperNoCurvature) {
   const Sheet s = build_sheet({0.2, 0.2, 5, 5}, SheetOptions{});
   EXPECT_TRUE(global_curvature(s.model.reference, Points(), s.triangles).interior.empty());
+  GaussianCurvature k = gaussian_curvature(s.model.reference, s.triangles);
+  EXPECT_THROW(average_density_over_windows(Points(3, 4), 0.01, k), std::invalid_argument);
+  EXPECT_THROW(average_density_over_windows(s.model.reference, 0.0, k), std::invalid_argument);
 }
 
 }  // namespace

@@ -19,7 +19,8 @@ GaussianCurvature global_curvature(const Points& x, const Points& paper,
                                    const std::vector<Triangle>& tris);
 
 // The density of `k` averaged over each interior vertex's window: the window's interior angle
-// defects over their areas; min/max density, positive and negative follow it.
+// defects over their areas; min/max density, positive and negative follow it. `paper` holds one
+// position per vertex of `k`, and radius > 0 (else std::invalid_argument).
 void average_density_over_windows(const Points& paper, double radius, GaussianCurvature& k);
 
 }  // namespace membra
