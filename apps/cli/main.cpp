@@ -126,6 +126,8 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
               << "/ (report.html, final.glb, final.obj, final.ply, report.json"
               << (r.solve.converged ? "" : "; not an equilibrium")
               << (render_note.empty() ? ", curvature.png, stress.png" : "") << ")\n";
+    const std::string tip = membra::multilevel_hint(scene, r.solve.wall_seconds);
+    if (!tip.empty()) std::cerr << tip << "\n";
   }
   return warn_if_not_at_rest(scene_file, scene, r) ? kNotAtRest : kOk;
 }

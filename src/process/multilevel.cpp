@@ -127,6 +127,21 @@ RunResult run_multilevel(const Scene& scene, const ProgressFn& progress) {
   return r;
 }
 
+std::string multilevel_hint(const Scene& scene, double seconds) {
+  if (scene.simulation.multilevel > 0 || seconds < 30.0) return "";
+  if (std::max(scene.grid.nx, scene.grid.ny) < 64) return "";  // below, levels gain little
+  Scene with = scene;
+  with.simulation.multilevel = 16;
+  if (multilevel_grids(with).size() < 2) return "";
+  std::ostringstream line;
+  line << "membra: tip: this " << scene.grid.nx << "x" << scene.grid.ny << " run took "
+       << std::lround(seconds)
+       << " s along its own path; --set simulation.multilevel=16 follows the path on coarser "
+          "grids and settles this one from their form, often several times faster (a "
+          "multistable pattern may then end in another of its stable forms; docs/solver.md)";
+  return line.str();
+}
+
 std::string levels_summary(const std::vector<GridLevel>& levels) {
   std::ostringstream line;
   line << "multilevel:";

@@ -41,6 +41,26 @@ TEST(Multilevel, HalvesTheGridDownToTheCoarsest) {
             (Grids{{61, 61}}));
 }
 
+// The tip after a long run: only without levels, from 64 nodes up, after 30 s, and where a
+// path could be followed on coarser grids.
+TEST(Multilevel, ALongFineRunWithoutLevelsGetsATip) {
+  const Scene fine = example("synclastic_ellipse.json", {"sheet.resolution=[64,64]"});
+  const std::string tip = multilevel_hint(fine, 88.0);
+  EXPECT_NE(tip.find("64x64 run took 88 s"), std::string::npos) << tip;
+  EXPECT_NE(tip.find("--set simulation.multilevel=16"), std::string::npos) << tip;
+  EXPECT_EQ(multilevel_hint(fine, 20.0), "");  // quick enough
+  EXPECT_EQ(multilevel_hint(example("synclastic_ellipse.json",
+                                    {"sheet.resolution=[64,64]", "simulation.multilevel=32"}),
+                            88.0),
+            "");  // levels already
+  EXPECT_EQ(multilevel_hint(example("synclastic_ellipse.json", {"sheet.resolution=[41,41]"}), 88.0),
+            "");  // too coarse to gain
+  EXPECT_EQ(multilevel_hint(example("synclastic_ellipse.json",
+                                    {"sheet.resolution=[64,64]", "simulation.solver=rk4"}),
+                            88.0),
+            "");  // no path to follow
+}
+
 TEST(Multilevel, RefusesWhatCannotWork) {
   EXPECT_THROW(example("exp3_parallel.json", {"simulation.multilevel=3"}), InputError);
   EXPECT_THROW(example("exp3_parallel.json", {"simulation.multilevel=-1"}), InputError);

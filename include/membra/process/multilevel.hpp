@@ -32,4 +32,9 @@ RunResult run_multilevel(const Scene& scene, const ProgressFn& progress);
 // One line for people: "multilevel: 32x32 path, 745 iterations, 15.1 s; 64x64 from 32x32, ...".
 std::string levels_summary(const std::vector<GridLevel>& levels);
 
+// A tip after a long run without levels: when `scene` has none (simulation.multilevel 0), a grid
+// of at least 64 nodes along its longer side whose last step multilevel could take from 16, and
+// the run took `seconds` >= 30, a line that says how; empty otherwise.
+std::string multilevel_hint(const Scene& scene, double seconds);
+
 }  // namespace membra
