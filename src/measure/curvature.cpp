@@ -103,7 +103,6 @@ GaussianCurvature gaussian_curvature(const Points& x, const std::vector<Triangle
 
 void smooth_density_on_grid(const GridSheet& g, GaussianCurvature& k) {
   std::vector<double> out(k.density.size(), 0.0);
-  bool first = true;
   for (int p = 0; p < g.num_particles(); ++p) {
     if (!k.interior[p]) continue;
     const auto [i, j] = g.node(p);
@@ -117,17 +116,23 @@ void smooth_density_on_grid(const GridSheet& g, GaussianCurvature& k) {
         area += w * k.area[q];
       }
     out[p] = defect / area;
-    k.min_density = first ? out[p] : std::min(k.min_density, out[p]);
-    k.max_density = first ? out[p] : std::max(k.max_density, out[p]);
-    first = false;
   }
-  k.density = std::move(out);
+  set_smoothed_density(k, std::move(out));
+}
+
+void set_smoothed_density(GaussianCurvature& k, std::vector<double> density) {
+  k.density = std::move(density);
   // The positive and negative parts follow the smoothed field: raw defects of opposite signs on
   // neighbouring valence-4 and valence-8 vertices would count grid noise as curvature.
+  bool first = true;
   k.positive = k.negative = 0.0;
-  for (int p = 0; p < g.num_particles(); ++p) {
+  for (size_t p = 0; p < k.density.size(); ++p) {
     if (!k.interior[p]) continue;
-    const double part = k.density[p] * k.area[p];
+    const double d = k.density[p];
+    k.min_density = first ? d : std::min(k.min_density, d);
+    k.max_density = first ? d : std::max(k.max_density, d);
+    first = false;
+    const double part = d * k.area[p];
     (part > 0.0 ? k.positive : k.negative) += part;
   }
 }

@@ -1,6 +1,5 @@
 #include "membra/measure/global_curvature.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 
 #include "membra/measure/paper_windows.hpp"
@@ -16,8 +15,6 @@ void average_density_over_windows(const Points& paper, double radius, GaussianCu
   const PaperWindows windows(paper, radius);
   std::vector<double> out(k.density.size(), 0.0);
   std::vector<Eigen::Index> near;
-  bool first = true;
-  k.positive = k.negative = 0.0;
   for (Eigen::Index p = 0; p < paper.cols(); ++p) {
     const auto sp = static_cast<size_t>(p);
     if (!k.interior[sp]) continue;
@@ -30,13 +27,8 @@ void average_density_over_windows(const Points& paper, double radius, GaussianCu
       area += k.area[sq];
     }
     out[sp] = area > 0.0 ? defect / area : 0.0;
-    k.min_density = first ? out[sp] : std::min(k.min_density, out[sp]);
-    k.max_density = first ? out[sp] : std::max(k.max_density, out[sp]);
-    first = false;
-    const double part = out[sp] * k.area[sp];
-    (part > 0.0 ? k.positive : k.negative) += part;
   }
-  k.density = std::move(out);
+  set_smoothed_density(k, std::move(out));
 }
 
 GaussianCurvature global_curvature(const Points& x, const Points& paper,

@@ -36,6 +36,11 @@ GaussianCurvature gaussian_curvature(const Points& x, const std::vector<Triangle
 // `negative` are recomputed from the smoothed densities; `total` stays the exact raw sum.
 void smooth_density_on_grid(const GridSheet& grid, GaussianCurvature& k);
 
+// Makes `density` (one value per vertex, 0 off the interior) k's density, with min/max density
+// and the positive and negative parts (density x area, by sign) following it over the interior
+// vertices: what every smoothing of the density ends with. `total` stays the raw sum.
+void set_smoothed_density(GaussianCurvature& k, std::vector<double> density);
+
 // Form class from the interior defects (rule in docs/measures.md): "developable" when
 // positive + |negative| < threshold; otherwise "synclastic" when positive >= 2 |negative|,
 // "anticlastic" when |negative| >= 2 positive, else "folded".
