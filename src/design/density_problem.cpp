@@ -22,7 +22,14 @@ StepReport follow_step(const Scene& scene, PreparedScene& p, const ProtocolStep&
 }  // namespace
 
 DensityProblem::DensityProblem(Scene scene, DensityField field)
-    : scene_(std::move(scene)), field_(std::move(field)) {
+    : DensityProblem(std::move(scene), [&field](const Membrane& m, const Points& frame_x) {
+        DensitySites sites = density_sites(m, frame_x, field);
+        return std::make_unique<DensityMap>(field, std::move(sites));
+      }) {
+  field_ = static_cast<const DensityMap&>(*map_).field();
+}
+
+DensityProblem::DensityProblem(Scene scene, const MapMaker& make_map) : scene_(std::move(scene)) {
   const auto& protocol = scene_.protocol;
   if (protocol.size() != 3 || !protocol[0].as<StretchStep>() || !protocol[1].as<ImpregnateStep>() ||
       !protocol[2].as<ReleaseStep>())
@@ -33,7 +40,7 @@ DensityProblem::DensityProblem(Scene scene, DensityField field)
   if (!solver_info(scene_.simulation.solver).equilibrium)
     throw std::invalid_argument("a density design needs an equilibrium solver");
   // Resin everywhere (a polygon beyond the frame): each element learns its resin's stiffness and
-  // length at impregnation; the density then sets only the fractions.
+  // length at impregnation; the variables then set only the fractions.
   const Box2 frame = scene_frame(scene_);
   const Vec2 pad = 0.01 * (frame.max - frame.min);
   const Vec2 lo = frame.min - pad, hi = frame.max + pad;
@@ -41,7 +48,7 @@ DensityProblem::DensityProblem(Scene scene, DensityField field)
   stretched_ = prepare_scene(scene_);
   for (int k = 0; k < 2; ++k) follow_step(scene_, stretched_, protocol[k]);
   frame_x_ = stretched_.membrane.state.x;
-  sites_ = density_sites(stretched_.membrane, frame_x_, field_);
+  map_ = make_map(stretched_.membrane, frame_x_);
 }
 
 Eigen::VectorXd DensityProblem::area_weights() const {
@@ -62,7 +69,7 @@ void DensityProblem::set_target(Correspondence target, double scale, double smoo
 
 bool DensityProblem::release_from_frame(const Eigen::VectorXd& rho) {
   p_ = stretched_;
-  apply_density(p_.membrane, sites_, rho);
+  map_->apply(p_.membrane, rho);
   const StepReport r = follow_step(scene_, p_, scene_.protocol[2]);
   iterations_ += r.solve.iterations;
   ++restarts_;
@@ -71,14 +78,14 @@ bool DensityProblem::release_from_frame(const Eigen::VectorXd& rho) {
 }
 
 bool DensityProblem::solve(const Eigen::VectorXd& rho) {
-  if (rho.size() != field_.value.size())
-    throw std::invalid_argument("one density per cell of the design's field");
+  if (rho.size() != map_->size())
+    throw std::invalid_argument("one value per design variable (a density per cell)");
   if (released_) {
     if (anchor_.cols() == p_.membrane.state.x.cols()) {
       p_.membrane.state.x = anchor_;
       p_.membrane.state.v.setZero();
     }
-    apply_density(p_.membrane, sites_, rho);
+    map_->apply(p_.membrane, rho);
     const SolveReport r = solve_scene_step(scene_, p_, p_.membrane.state, "design", {});
     iterations_ += r.iterations;
     if (r.converged) return true;
@@ -90,25 +97,25 @@ void DensityProblem::anchor() {
   if (released_) anchor_ = p_.membrane.state.x;
 }
 
-double DensityProblem::smoothness(const Eigen::VectorXd& rho, Eigen::VectorXd* gradient) const {
-  const int nx = field_.nx, ny = field_.ny;
-  const int pairs = (nx - 1) * ny + nx * (ny - 1);
-  *gradient = Eigen::VectorXd::Zero(rho.size());
-  if (pairs == 0 || smoothing_ == 0.0) return 0.0;
-  const double w = smoothing_ / pairs;
-  double sum = 0.0;
-  auto pair = [&](int a, int b) {
-    const double d = rho[a] - rho[b];
-    sum += w * d * d;
-    (*gradient)[a] += 2.0 * w * d;
-    (*gradient)[b] -= 2.0 * w * d;
-  };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      if (i + 1 < nx) pair(i + nx * j, i + 1 + nx * j);
-      if (j + 1 < ny) pair(i + nx * j, i + nx * (j + 1));
-    }
-  return sum;
+bool DensityProblem::solve_from(const Eigen::VectorXd& rho, const Points& x) {
+  if (rho.size() != map_->size())
+    throw std::invalid_argument("one value per design variable (a density per cell)");
+  if (x.cols() != frame_x_.cols())
+    throw std::invalid_argument("a start needs one position per particle");
+  p_ = stretched_;
+  // The release step's end state without its path: the frame let go, the latex at its natural
+  // length (apply_release, process/steps.cpp, ends there).
+  begin_release(p_.membrane);
+  set_release_level(p_.membrane, 0.0);
+  map_->apply(p_.membrane, rho);
+  p_.membrane.state.x = x;
+  p_.membrane.state.v.setZero();
+  const SolveReport r = solve_scene_step(scene_, p_, p_.membrane.state, "design", {});
+  iterations_ += r.iterations;
+  released_ = r.converged;
+  anchor_.resize(3, 0);
+  anchor();
+  return released_;
 }
 
 DensityEvaluation DensityProblem::evaluate(const Eigen::VectorXd& rho) {
@@ -126,13 +133,13 @@ DensityEvaluation DensityProblem::evaluate(const Eigen::VectorXd& rho) {
   const double s2 = scale_ * scale_;
   Eigen::VectorXd smooth;
   ev.distance = a.value;
-  ev.objective = a.value / s2 + smoothness(rho, &smooth);
+  ev.objective = a.value / s2 + map_->regularization(rho, smoothing_, &smooth);
   const std::optional<Points> w = solve_adjoint(p_.membrane.sheet.model, x, a.gradient / s2);
   if (!w) {  // not a stable minimum after all: no gradient to trust
     ev.converged = false;
     return ev;
   }
-  ev.gradient = smooth - density_force_sensitivity(p_.membrane, sites_, x, *w);
+  ev.gradient = smooth - map_->pull_back(p_.membrane, rho, x, *w);
   return ev;
 }
 

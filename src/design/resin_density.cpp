@@ -48,25 +48,32 @@ DensitySites density_sites(const Membrane& m, const Points& x_frame, const Densi
   return s;
 }
 
+void set_spring_fraction(Membrane& m, int s, double f) {
+  m.resin_fraction[s] = f;
+  update_spring(m, s);
+}
+
+void set_bend_fraction(Membrane& m, int e, double f) {
+  const double cl = m.latex_bending[e];
+  m.bending_fraction[e] = f;
+  m.sheet.model.bending.stiffness[e] = 1.0 / ((1.0 - f) / cl + f / (cl + m.resin_bending[e]));
+}
+
 void apply_density(Membrane& m, const DensitySites& sites, const Eigen::VectorXd& rho) {
   Model& model = m.sheet.model;
   for (int s = 0; s < model.springs.size(); ++s) {
     if (model.springs.family[s] == SpringFamily::added) continue;
-    m.resin_fraction[s] = fraction(sites.spring[s], rho);
-    update_spring(m, s);
+    set_spring_fraction(m, s, fraction(sites.spring[s], rho));
   }
-  for (int e = 0; e < model.bending.size(); ++e) {
-    const double f = fraction(sites.bend[e], rho), cl = m.latex_bending[e];
-    m.bending_fraction[e] = f;
-    model.bending.stiffness[e] = 1.0 / ((1.0 - f) / cl + f / (cl + m.resin_bending[e]));
-  }
+  for (int e = 0; e < model.bending.size(); ++e)
+    set_bend_fraction(m, e, fraction(sites.bend[e], rho));
 }
 
-Eigen::VectorXd density_force_sensitivity(const Membrane& m, const DensitySites& sites,
-                                          const Points& x, const Points& w) {
+ElementRates element_force_sensitivity(const Membrane& m, const Points& x, const Points& w) {
   const Model& model = m.sheet.model;
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(sites.cells);
   const Springs& sp = model.springs;
+  ElementRates out;
+  out.spring = Eigen::VectorXd::Zero(sp.size());
   for (int s = 0; s < sp.size(); ++s) {
     if (sp.family[s] == SpringFamily::added) continue;
     const Vec3 d = x.col(sp.b[s]) - x.col(sp.a[s]);
@@ -75,9 +82,10 @@ Eigen::VectorXd density_force_sensitivity(const Membrane& m, const DensitySites&
     // grad E . w = k (l - l0) dl, dl = n . (w_b - w_a); its derivative in f.
     const double dl = d.dot(w.col(sp.b[s]) - w.col(sp.a[s])) / l;
     const SpringRate r = spring_rate(m, s, sp.stiffness[s]);
-    spread(sites.spring[s], (r.dk * (l - sp.rest_length[s]) - sp.stiffness[s] * r.dl0) * dl, out);
+    out.spring[s] = (r.dk * (l - sp.rest_length[s]) - sp.stiffness[s] * r.dl0) * dl;
   }
   const Bending& b = model.bending;
+  out.bend = Eigen::VectorXd::Zero(b.size());
   for (int e = 0; e < b.size(); ++e) {
     const auto& v = b.v[e];
     // The element's energy is linear in its stiffness c: grad E . w = c (grad E1 . w).
@@ -85,10 +93,54 @@ Eigen::VectorXd density_force_sensitivity(const Membrane& m, const DensitySites&
     double work = 0.0;
     for (int i = 0; i < 3; ++i) work += unit.grad[i].dot(w.col(v[i]));
     const double c = b.stiffness[e], cl = m.latex_bending[e];
-    const double dc = c * c * (1.0 / cl - 1.0 / (cl + m.resin_bending[e]));
-    spread(sites.bend[e], dc * work, out);
+    out.bend[e] = c * c * (1.0 / cl - 1.0 / (cl + m.resin_bending[e])) * work;
   }
   return out;
+}
+
+Eigen::VectorXd density_force_sensitivity(const Membrane& m, const DensitySites& sites,
+                                          const Points& x, const Points& w) {
+  const ElementRates r = element_force_sensitivity(m, x, w);
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(sites.cells);
+  const Springs& sp = m.sheet.model.springs;
+  for (int s = 0; s < sp.size(); ++s)
+    if (sp.family[s] != SpringFamily::added) spread(sites.spring[s], r.spring[s], out);
+  for (int e = 0; e < m.sheet.model.bending.size(); ++e) spread(sites.bend[e], r.bend[e], out);
+  return out;
+}
+
+DensityMap::DensityMap(DensityField field, DensitySites sites)
+    : field_(std::move(field)), sites_(std::move(sites)) {}
+
+void DensityMap::apply(Membrane& m, const Eigen::VectorXd& rho) const {
+  apply_density(m, sites_, rho);
+}
+
+Eigen::VectorXd DensityMap::pull_back(const Membrane& m, const Eigen::VectorXd&, const Points& x,
+                                      const Points& w) const {
+  return density_force_sensitivity(m, sites_, x, w);
+}
+
+double DensityMap::regularization(const Eigen::VectorXd& rho, double weight,
+                                  Eigen::VectorXd* gradient) const {
+  const int nx = field_.nx, ny = field_.ny;
+  const int pairs = (nx - 1) * ny + nx * (ny - 1);
+  *gradient = Eigen::VectorXd::Zero(rho.size());
+  if (pairs == 0 || weight == 0.0) return 0.0;
+  const double w = weight / pairs;
+  double sum = 0.0;
+  auto pair = [&](int a, int b) {
+    const double d = rho[a] - rho[b];
+    sum += w * d * d;
+    (*gradient)[a] += 2.0 * w * d;
+    (*gradient)[b] -= 2.0 * w * d;
+  };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      if (i + 1 < nx) pair(i + nx * j, i + 1 + nx * j);
+      if (j + 1 < ny) pair(i + nx * j, i + nx * (j + 1));
+    }
+  return sum;
 }
 
 }  // namespace membra

@@ -18,9 +18,8 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
   const int nx = std::max(1, static_cast<int>(std::lround(size.x() / c)));
   const int ny = std::max(1, static_cast<int>(std::lround(size.y() / c)));
   const double cx = size.x() / nx, cy = size.y() / ny;  // cells fill the frame exactly
-  Stencil s;
-  std::vector<std::array<Vec2, 4>> squares;
-  double resin = 0.0, total = 0.0;
+  std::vector<StencilSquare> squares;
+  double total = 0.0;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const Vec2 centre = frame.min + Vec2((i + 0.5) * cx, (j + 0.5) * cy);
@@ -29,21 +28,31 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
       const double rho = std::clamp(density(centre), 0.0, 1.0);
       // A square of the cell's shape with area share rho; too small a piece is dropped, too
       // narrow a gap closed.
-      double fx = std::sqrt(rho) * cx, fy = std::sqrt(rho) * cy;
-      if (std::min(fx, fy) < w) continue;
-      if (cx - fx < w || cy - fy < w) fx = cx, fy = cy;
-      const Vec2 h(0.5 * fx, 0.5 * fy);
-      std::array<Vec2, 4> square = {centre - h, Vec2(centre.x() + h.x(), centre.y() - h.y()),
-                                    centre + h, Vec2(centre.x() - h.x(), centre.y() + h.y())};
-      // Through mm, as a scene file holds it, so that the stencil simulated is the one written.
-      for (Vec2& p : square) p = (p / units::mm) * units::mm;
-      squares.push_back(square);
-      resin += fx * fy;
-      ++s.pieces;
+      double scale = std::sqrt(rho);
+      if (scale * std::min(cx, cy) < w) continue;
+      if ((1.0 - scale) * std::min(cx, cy) < w) scale = 1.0;
+      squares.push_back({centre, Vec2(cx, cy), scale});
     }
-  Stencil out = stencil_of(squares);
-  out.resin_share = total > 0.0 ? resin / total : 0.0;
-  out.pieces = s.pieces;
+  return stencil_of(squares, total);
+}
+
+Stencil stencil_of(const std::vector<StencilSquare>& squares, double outline_area) {
+  std::vector<std::array<Vec2, 4>> corners;
+  double resin = 0.0;
+  for (const StencilSquare& q : squares) {
+    const Vec2 h = 0.5 * q.scale * q.cell;
+    const Vec2& c = q.centre;
+    std::array<Vec2, 4> square = {c - h, Vec2(c.x() + h.x(), c.y() - h.y()), c + h,
+                                  Vec2(c.x() - h.x(), c.y() + h.y())};
+    // Through mm, as a scene file holds it, so that the stencil simulated is the one written.
+    for (Vec2& p : square) p = (p / units::mm) * units::mm;
+    corners.push_back(square);
+    resin += (q.scale * q.cell.x()) * (q.scale * q.cell.y());
+  }
+  Stencil out = stencil_of(corners);
+  out.resin_share = outline_area > 0.0 ? resin / outline_area : 0.0;
+  out.squares = squares;
+  out.outline_area = outline_area;
   return out;
 }
 

@@ -20,13 +20,18 @@ Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil) {
 
 StencilTrial try_stencil(const DesignSpec& spec, const TargetSurface& target,
                          const std::function<double(const Vec2&)>& density) {
-  StencilTrial e;
   const Box2 frame{Vec2::Zero(), Vec2(spec.frame, spec.frame)};
   const Vec2 centre = 0.5 * frame.max;
   const auto inside = [&](const Vec2& p) {
     return !target.disk || (p - centre).norm() <= 0.5 * spec.frame;
   };
-  e.stencil = layout_stencil(density, frame, spec.layout, inside);
+  return simulate_stencil(spec, target, layout_stencil(density, frame, spec.layout, inside));
+}
+
+StencilTrial simulate_stencil(const DesignSpec& spec, const TargetSurface& target,
+                              Stencil stencil) {
+  StencilTrial e;
+  e.stencil = std::move(stencil);
   e.scene = stencil_scene(spec, e.stencil);
   try {
     e.run = run_scene(e.scene);

@@ -7,11 +7,14 @@
 //   H w = dJ/dx,  dJ/drho = -w . d(grad E)/drho.
 // Each equilibrium is warm-started from the last one (a Newton solve at the new densities); only
 // when that fails is the release path followed again from the stretched sheet.
+#include <functional>
+#include <memory>
 #include <optional>
 
 #include "membra/design/aligned_distance.hpp"
 #include "membra/design/density_field.hpp"
 #include "membra/design/resin_density.hpp"
+#include "membra/design/resin_map.hpp"
 #include "membra/process/prepare.hpp"
 #include "membra/process/scene.hpp"
 
@@ -31,6 +34,12 @@ class DensityProblem {
   // `scene`: stretch, impregnate (its pattern is ignored: the resin goes everywhere, by
   // density), release, solved with its equilibrium solver. Throws InputError as a run would.
   DensityProblem(Scene scene, DensityField field);
+  // The same problem for other variables: `make_map` gets the membrane impregnated everywhere on
+  // its frame and the particles' frame positions, and returns how the variables place the resin
+  // (e.g. a stencil's piece sizes, design/piece_map.hpp). field() is then empty.
+  using MapMaker =
+      std::function<std::unique_ptr<ResinMap>(const Membrane& stretched, const Points& frame_x)>;
+  DensityProblem(Scene scene, const MapMaker& make_map);
   DensityProblem(const DensityProblem&) = delete;
   DensityProblem& operator=(const DensityProblem&) = delete;
 
@@ -41,13 +50,17 @@ class DensityProblem {
   const DensityField& field() const { return field_; }
 
   // The target: the point each particle should reach, and the length that makes the objective
-  // dimensionless (e.g. the target's diameter). `smoothing` weighs the mean squared density
-  // difference between neighbouring cells.
+  // dimensionless (e.g. the target's diameter). `smoothing` weighs the map's regularisation
+  // (densities: the mean squared difference between neighbouring cells).
   void set_target(Correspondence target, double scale, double smoothing);
 
   // The released equilibrium for `rho`; false when no stable one was found. Newton starts from
   // the anchor (the last equilibrium until anchor() is called).
   bool solve(const Eigen::VectorXd& rho);
+  // The released equilibrium for `rho` found by Newton from positions `x` (e.g. the form a
+  // stencil released into from flat) instead of the release path, and anchored there: the
+  // branch that later solves follow. False when none was found there.
+  bool solve_from(const Eigen::VectorXd& rho, const Points& x);
   // Makes the present equilibrium the start of every later solve. A sheet is multistable: warm
   // starts from wherever the last solve ended make the form depend on the order of evaluations,
   // and a line search that steps back would not find the form it left. Anchored at the best
@@ -60,14 +73,12 @@ class DensityProblem {
 
  private:
   bool release_from_frame(const Eigen::VectorXd& rho);
-  double smoothness(const Eigen::VectorXd& rho, Eigen::VectorXd* gradient) const;
-
   Scene scene_;
   DensityField field_;
   PreparedScene stretched_;  // stretched and impregnated everywhere, before release
   PreparedScene p_;          // released (the path's set() refers to this one)
   Points frame_x_;
-  DensitySites sites_;
+  std::unique_ptr<ResinMap> map_;
   Correspondence target_;
   double scale_ = 1.0, smoothing_ = 0.0;
   bool released_ = false;

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "membra/design/density_field.hpp"
+#include "membra/design/resin_map.hpp"
 #include "membra/model/membrane.hpp"
 
 namespace membra {
@@ -27,10 +28,40 @@ DensitySites density_sites(const Membrane& m, const Points& x_frame, const Densi
 // updates their stiffness and rest length (at the membrane's present release level).
 void apply_density(Membrane& m, const DensitySites& sites, const Eigen::VectorXd& rho);
 
+// Sets one spring's (not an added one's) or bending element's resin fraction and the stiffness
+// and rest length that follow by the process's composite rules.
+void set_spring_fraction(Membrane& m, int s, double f);
+void set_bend_fraction(Membrane& m, int e, double f);
+
+// For every spring and bending element, d/df of (grad E(x) . w) in its resin fraction f: what
+// any design variable's sensitivity is made of (added springs: 0).
+struct ElementRates {
+  Eigen::VectorXd spring, bend;
+};
+ElementRates element_force_sensitivity(const Membrane& m, const Points& x, const Points& w);
+
 // For each cell c, d/d rho_c of (grad E(x) . w): how the forces' virtual work along the
 // displacement field w changes with the cell's density, at positions x. With w the adjoint
 // solution this is the equilibrium's sensitivity term of the adjoint method.
 Eigen::VectorXd density_force_sensitivity(const Membrane& m, const DensitySites& sites,
                                           const Points& x, const Points& w);
+
+// The density field as a design's resin map: one variable per cell, regularised by the mean
+// squared difference of neighbouring cells.
+class DensityMap final : public ResinMap {
+ public:
+  DensityMap(DensityField field, DensitySites sites);
+  Eigen::Index size() const override { return field_.value.size(); }
+  void apply(Membrane& m, const Eigen::VectorXd& rho) const override;
+  Eigen::VectorXd pull_back(const Membrane& m, const Eigen::VectorXd& rho, const Points& x,
+                            const Points& w) const override;
+  double regularization(const Eigen::VectorXd& rho, double weight,
+                        Eigen::VectorXd* gradient) const override;
+  const DensityField& field() const { return field_; }
+
+ private:
+  DensityField field_;
+  DensitySites sites_;
+};
 
 }  // namespace membra

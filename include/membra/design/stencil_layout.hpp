@@ -17,11 +17,21 @@ struct StencilLayout {
   double min_feature = 0.004;  // m, the narrowest piece or gap the stencil may have
 };
 
+// One piece of a laid-out stencil: a rectangle of its cell's shape, centred in the cell.
+struct StencilSquare {
+  Vec2 centre = Vec2::Zero();  // m, frame coordinates
+  Vec2 cell = Vec2::Zero();    // m, the cell's sides
+  double scale = 1.0;          // the piece's sides over the cell's (1: a filled cell)
+};
+
 struct Stencil {
   PatternPtr pattern;        // nullptr when no cell gets resin
   PatternSpec spec;          // its description (the squares as polygons), when not empty
   double resin_share = 0.0;  // of the frame area inside the outline
   int pieces = 0;            // squares of resin
+  // From layout_stencil: its pieces, and the area of the cells inside the outline.
+  std::vector<StencilSquare> squares;
+  double outline_area = 0.0;  // m^2
 };
 
 // `density(p)` at each cell centre p (frame coordinates, m); cells whose centre is not
@@ -33,5 +43,7 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
 
 // A stencil of the given squares (corners in frame coordinates, m): one polygon each.
 Stencil stencil_of(const std::vector<std::array<Vec2, 4>>& squares);
+// The stencil of laid-out pieces within cells of `outline_area` (its resin share over that).
+Stencil stencil_of(const std::vector<StencilSquare>& squares, double outline_area);
 
 }  // namespace membra

@@ -28,6 +28,8 @@ struct StencilTrial {
 };
 StencilTrial try_stencil(const DesignSpec& spec, const TargetSurface& target,
                          const std::function<double(const Vec2&)>& density);
+// The same for a stencil already laid out.
+StencilTrial simulate_stencil(const DesignSpec& spec, const TargetSurface& target, Stencil stencil);
 // The trial as an entry of the design's history (stage "stencil"; not yet marked best).
 DesignIteration trial_iteration(const StencilTrial& trial, int index, double seconds);
 // Makes the trial the design's result: its scene, stencil, run, error and errors in %.
