@@ -25,12 +25,13 @@ int cmd_design(const DesignArgs& args) {
   const DesignResult r = run_design(spec, [&](const DesignIteration& it) {
     if (args.quiet) return;
     char line[200];
-    if (it.stage == "density") {  // an adjoint iterate: distance to its own target points
+    if (it.adjoint_iterate()) {  // distance to its own target points
       std::snprintf(
           line, sizeof line,
-          "  %3d  target points rms %6.2f %%  objective %.4g  |gradient| %.3g  %6.1f s%s%s%s\n",
-          it.index, it.rms_error, it.objective, it.gradient_norm, it.seconds,
-          it.best ? "  best" : "", it.note.empty() ? "" : "  ", it.note.c_str());
+          "  %3d  %starget points rms %6.2f %%  objective %.4g  |gradient| %.3g  %6.1f s%s%s%s\n",
+          it.index, it.stage == "pieces" ? "pieces: " : "", it.rms_error, it.objective,
+          it.gradient_norm, it.seconds, it.best ? "  best" : "", it.note.empty() ? "" : "  ",
+          it.note.c_str());
       std::cerr << line;
       return;
     }

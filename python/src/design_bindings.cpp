@@ -34,7 +34,8 @@ py::dict iteration_dict(const DesignIteration& it) {
   d["seconds"] = it.seconds;
   d["best"] = it.best;
   d["note"] = it.note;
-  d["stage"] = it.stage;  // "density" (an adjoint iterate: rms to its target points) or "stencil"
+  // "density" or "pieces" (adjoint iterates: rms to their target points) or "stencil"
+  d["stage"] = it.stage;
   d["objective"] = it.objective;
   d["gradient_norm"] = it.gradient_norm;
   return d;

@@ -11,6 +11,7 @@
 #include "membra/core/stopwatch.hpp"
 #include "membra/design/density_optimizer.hpp"
 #include "membra/design/density_problem.hpp"
+#include "membra/design/piece_map.hpp"
 #include "membra/design/stencil_calibration.hpp"
 #include "membra/design/stencil_trial.hpp"
 #include "membra/design/target_correspondence.hpp"
@@ -40,10 +41,11 @@ void note_reach(const MetricStart& start, DesignResult& r) {
   r.message += why.str();
 }
 
-DesignIteration density_iterate(const DensityIterate& it, double diameter) {
+DesignIteration density_iterate(const DensityIterate& it, double diameter,
+                                const char* stage = "density") {
   DesignIteration d;
   d.index = it.index;
-  d.stage = "density";
+  d.stage = stage;
   d.rms_error = 100.0 * it.rms / diameter;
   d.objective = it.objective;
   d.gradient_norm = it.gradient_norm;
@@ -79,12 +81,73 @@ bool better_trial(const StencilTrial& a, const StencilTrial& b) {
   return a.rms < b.rms;
 }
 
+// Stage 3's last step: the best trial's piece sizes optimised by the adjoint along the branch it
+// released into (design/piece_map.hpp; warm-started from its form, so the crumpled minimum it
+// found is followed, not another), then released from flat as `membra run` would. Kept when
+// that run is the closer to the target.
+void refine_pieces(const DesignSpec& spec, const Scene& scene, StencilTrial& best, DesignResult& r,
+                   const Stopwatch& clock, double deadline,
+                   const std::function<void(const DesignIteration&)>& progress) {
+  if (spec.piece_evaluations <= 0 || best.stencil.squares.empty() || !best.note.empty() ||
+      clock.seconds() >= deadline)
+    return;
+  const PieceMap* map = nullptr;
+  DensityProblem problem(scene, [&](const Membrane& m, const Points& frame_x) {
+    auto made = std::make_unique<PieceMap>(best.stencil, spec.layout.min_feature, m, frame_x);
+    map = made.get();
+    return made;
+  });
+  if (map->size() == 0) return;  // only filled cells: nothing to size
+  const Flattening flat =
+      spec.flattening == "projection" ? Flattening::projection : Flattening::conformal;
+  problem.set_target(
+      target_correspondence(r.target, problem.frame_positions(), problem.area_weights(), flat),
+      r.target.diameter, 0.0);
+  const Eigen::VectorXd start = map->variables();
+  if (!problem.solve_from(start, best.run.prepared.membrane.state.x)) return;
+  DensityOptimizerOptions o;
+  o.evaluations = spec.piece_evaluations;
+  o.max_seconds = std::max(1.0, deadline - clock.seconds());
+  o.relative_change = 1e-6;
+  const int first = static_cast<int>(r.history.size());
+  const DensityOptimum sized = optimize_density(problem, start, o, [&](const DensityIterate& it) {
+    r.history.push_back(density_iterate(it, r.target.diameter, "pieces"));
+    r.history.back().index = first + it.index;
+    if (progress) progress(r.history.back());
+  });
+  if (sized.rho == start) return;  // no size did better along the branch
+  // How close the branch itself came, by the same measure as every stencil's error: whether a
+  // release from flat keeps it is the question the next run answers.
+  std::ostringstream note;
+  note << "piece sizes refined";
+  if (problem.solve(sized.rho))
+    note << " (on the branch: "
+         << 100.0 *
+                compare_shapes(problem.positions(), problem.membrane().sheet.triangles, r.target)
+                    .rms /
+                r.target.diameter
+         << " %)";
+  const double began = clock.seconds();
+  StencilTrial t = simulate_stencil(spec, r.target, map->stencil(sized.rho));
+  r.history.push_back(
+      trial_iteration(t, static_cast<int>(r.history.size()), clock.seconds() - began));
+  DesignIteration& it = r.history.back();
+  if (!t.note.empty()) note << ", " << t.note;
+  it.note = note.str();
+  const bool simulated = t.run.prepared.membrane.state.x.cols() > 0 && std::isfinite(t.rms);
+  if (simulated && better_trial(t, best)) {
+    it.best = true;
+    best = std::move(t);
+  }
+  if (progress) progress(it);
+}
+
 // Stage 3: squares whose measured effect is the wanted density (design/stencil_calibration.hpp),
 // simulated from the flat start, then (spec.stencil_trials) the same with the densities scaled;
 // the best trial becomes the design's result. `deadline`: seconds of `clock` after which no
 // further trial starts.
-void lay_out_and_simulate(const DesignSpec& spec, DesignResult& r, const Stopwatch& clock,
-                          double deadline,
+void lay_out_and_simulate(const DesignSpec& spec, const Scene& scene, DesignResult& r,
+                          const Stopwatch& clock, double deadline,
                           const std::function<void(const DesignIteration&)>& progress) {
   const TargetSurface& target = r.target;
   const StencilCalibration calibration = calibrate_stencil(spec);
@@ -114,6 +177,7 @@ void lay_out_and_simulate(const DesignSpec& spec, DesignResult& r, const Stopwat
       throw InputError(spec.file.string(),
                        "the designed stencil could not be simulated: " + t.note);
   }
+  refine_pieces(spec, scene, *best, r, clock, deadline, progress);
   if (!best->note.empty()) {
     if (!r.message.empty()) r.message += ' ';
     r.message += "The stencil's simulation ";
@@ -168,7 +232,7 @@ void design_by_adjoint(const DesignSpec& spec, DesignResult& r,
     r.density_rms_error = 100.0 * r.density_error.rms / target.diameter;
   }
 
-  lay_out_and_simulate(spec, r, clock, spec.budget, progress);
+  lay_out_and_simulate(spec, scene, r, clock, spec.budget, progress);
 }
 
 }  // namespace membra

@@ -20,7 +20,7 @@ nlohmann::json params(const DensityParameters& p) {
 }
 
 nlohmann::json iteration(const DesignIteration& it) {
-  if (it.stage == "density")  // an adjoint iterate: no stencil, distances to its own points
+  if (it.adjoint_iterate())  // no stencil simulated from flat: distances to its own points
     return {{"index", it.index},
             {"stage", it.stage},
             {"correspondence_rms", number(it.rms_error)},

@@ -140,9 +140,9 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
 // /design: the search's budget and the simulations' solver.
 void read_design_settings(const JsonObject& top, DesignSpec& s) {
   if (!top.has("design")) return;
-  const JsonObject o =
-      top.object("design", {"method", "evaluations", "budget", "solver", "tolerance", "increments",
-                            "density_cell", "smoothing", "flattening", "stencil_trials"});
+  const JsonObject o = top.object(
+      "design", {"method", "evaluations", "budget", "solver", "tolerance", "increments",
+                 "density_cell", "smoothing", "flattening", "stencil_trials", "piece_evaluations"});
   s.method = o.string("method", s.method, {"adjoint", "pattern_search"});
   // The adjoint's evaluations are cheap warm starts: it takes more of them by default.
   s.evaluations = static_cast<int>(
@@ -154,6 +154,8 @@ void read_design_settings(const JsonObject& top, DesignSpec& s) {
   s.smoothing = o.number("smoothing", s.smoothing, Bounds::between(0.0, 1e6));
   s.flattening = o.string("flattening", s.flattening, {"conformal", "projection"});
   s.stencil_trials = static_cast<int>(o.integer("stencil_trials", s.stencil_trials, 1, 5));
+  s.piece_evaluations =
+      static_cast<int>(o.integer("piece_evaluations", s.piece_evaluations, 0, 1000));
   if (s.method == "adjoint" && s.bilayer)
     throw InputError("/resin/bilayer",
                      "the adjoint method does not place a coat on one face yet: use "

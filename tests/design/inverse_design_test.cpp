@@ -112,7 +112,10 @@ INSTANTIATE_TEST_SUITE_P(Targets, AdjointKinds,
 // report's stencil entries say which scale each was.
 TEST(InverseDesign, TheAdjointKeepsTheBestOfItsStencilTrials) {
   json design = small_design({{"saddle", {{"size", 150}, {"height", 15}}}}, 4);
-  design["design"].update({{"method", "adjoint"}, {"density_cell", 25}, {"stencil_trials", 3}});
+  design["design"].update({{"method", "adjoint"},
+                           {"density_cell", 25},
+                           {"stencil_trials", 3},
+                           {"piece_evaluations", 0}});
   const DesignResult d = run_design(parse_design(design));
   std::vector<const DesignIteration*> stencils;
   for (const DesignIteration& it : d.history)
@@ -205,6 +208,14 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   EXPECT_EQ(parse_design(j).stencil_trials, 2);
   j["design"].erase("stencil_trials");
   EXPECT_EQ(parse_design(j).stencil_trials, 5);
+  for (double evaluations : {-1.0, 1001.0, 2.5}) {  // a whole number from 0 (off) to 1000
+    j["design"]["piece_evaluations"] = evaluations;
+    EXPECT_NE(error_of(j).find("/design/piece_evaluations"), std::string::npos) << evaluations;
+  }
+  j["design"]["piece_evaluations"] = 0;
+  EXPECT_EQ(parse_design(j).piece_evaluations, 0);
+  j["design"].erase("piece_evaluations");
+  EXPECT_EQ(parse_design(j).piece_evaluations, 20);
   j["resin"]["bilayer"] = true;  // not placed by the adjoint yet
   EXPECT_NE(error_of(j).find("/resin/bilayer"), std::string::npos);
   j["resin"].erase("bilayer");

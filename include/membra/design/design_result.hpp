@@ -31,8 +31,9 @@ struct DesignIteration {
   int index = 0;
   // "stencil": a stencil simulated and compared (rms and max after rigid alignment);
   // "density": an adjoint iterate, whose rms_error is the distance to the particles' own target
-  // points (no max, pieces or share).
+  // points (no max, pieces or share); "pieces": the same for stage 3's piece sizes.
   std::string stage = "stencil";
+  bool adjoint_iterate() const { return stage == "density" || stage == "pieces"; }
   double objective = 0.0, gradient_norm = 0.0;  // density iterates
   DensityParameters parameters;
   double rms_error = 0.0, max_error = 0.0;  // % of the target's diameter
