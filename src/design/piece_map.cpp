@@ -8,25 +8,29 @@
 namespace membra {
 namespace {
 
-// The share of [b0, b1] inside [c - h, c + h], and its derivative in h.
-std::pair<double, double> overlap(double b0, double b1, double c, double h) {
-  const double o = std::min(b1, c + h) - std::max(b0, c - h);
-  if (o <= 0.0) return {0.0, 0.0};
-  const double inside_ends = (c + h < b1 ? 1.0 : 0.0) + (c - h > b0 ? 1.0 : 0.0);
-  return {o / (b1 - b0), inside_ends / (b1 - b0)};
-}
-
-template <typename Nodes>
-auto box_of(const Points& x, const Nodes& nodes, const Vec2& spacing) {
-  Vec2 lo = x.col(nodes[0]).template head<2>(), hi = lo;
-  for (int p : nodes) {
-    lo = lo.cwiseMin(x.col(p).template head<2>());
-    hi = hi.cwiseMax(x.col(p).template head<2>());
+// The share of segment a-b inside the rectangle c +- h (Liang-Barsky clipping), and its
+// derivatives in the half sides h.x and h.y.
+struct Clip {
+  double share = 0.0;
+  Vec2 rate = Vec2::Zero();
+};
+Clip clip(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& h) {
+  double t0 = 0.0, t1 = 1.0;
+  Vec2 d0 = Vec2::Zero(), d1 = Vec2::Zero();  // d t0 / d h, d t1 / d h
+  const Vec2 d = b - a;
+  for (int k = 0; k < 2; ++k) {
+    if (d[k] == 0.0) {  // along the other axis: all in or all out across this one
+      if (std::abs(a[k] - c[k]) > h[k]) return {};
+      continue;
+    }
+    // Entering at |d| t = (c - h - a) sign(d), leaving at (c + h - a) sign(d).
+    const double inv = 1.0 / std::abs(d[k]), s = d[k] > 0.0 ? 1.0 : -1.0;
+    const double enter = (s * (c[k] - a[k]) - h[k]) * inv, leave = (s * (c[k] - a[k]) + h[k]) * inv;
+    if (enter > t0) t0 = enter, d0 = Vec2::Zero(), d0[k] = -inv;
+    if (leave < t1) t1 = leave, d1 = Vec2::Zero(), d1[k] = inv;
   }
-  // An element along a grid line has no width across it: it stands for half a spacing each side.
-  for (int k = 0; k < 2; ++k)
-    if (hi[k] - lo[k] < 1e-6 * spacing[k]) lo[k] -= 0.5 * spacing[k], hi[k] += 0.5 * spacing[k];
-  return std::pair{lo, hi};
+  if (t1 <= t0) return {};
+  return {t1 - t0, d1 - d0};
 }
 
 }  // namespace
@@ -46,28 +50,32 @@ PieceMap::PieceMap(const Stencil& stencil, double min_feature, const Membrane& m
     lo_.push_back(lo);
     hi_.push_back(hi);
   }
-  const Vec2 spacing(m.sheet.grid.hx() * m.stretch.x(), m.sheet.grid.hy() * m.stretch.y());
-  auto near = [&](const Box& b) {
-    std::vector<int> out;
+  // The squares whose cell meets the element's bounding box: the only ones that can cover it.
+  auto element = [&](std::vector<Segment> segments) {
+    Vec2 lo = segments[0].a, hi = lo;
+    for (const Segment& g : segments) {
+      lo = lo.cwiseMin(g.a).cwiseMin(g.b);
+      hi = hi.cwiseMax(g.a).cwiseMax(g.b);
+    }
+    Element e{std::move(segments), {}};
     for (size_t k = 0; k < squares_.size(); ++k) {
       const Vec2 c = squares_[k].centre, h = 0.5 * squares_[k].cell;
-      if ((b.lo.array() < (c + h).array()).all() && (b.hi.array() > (c - h).array()).all())
-        out.push_back(static_cast<int>(k));
+      if ((lo.array() <= (c + h).array()).all() && (hi.array() >= (c - h).array()).all())
+        e.near.push_back(static_cast<int>(k));
     }
-    return out;
+    return e;
   };
+  auto at = [&](int p) -> Vec2 { return frame_x.col(p).head<2>(); };
   const Springs& sp = m.sheet.model.springs;
   for (int s = 0; s < sp.size(); ++s) {
-    const auto [lo, hi] = box_of(frame_x, std::array<int, 2>{sp.a[s], sp.b[s]}, spacing);
-    spring_box_.push_back({lo, hi});
-    spring_near_.push_back(near(spring_box_.back()));
+    springs_.push_back(element({{at(sp.a[s]), at(sp.b[s]), 1.0}}));
     added_.push_back(sp.family[s] == SpringFamily::added);
   }
+  // A bending element's fraction is the mean of its two segments' (model/membrane.cpp).
   const Bending& b = m.sheet.model.bending;
   for (int e = 0; e < b.size(); ++e) {
-    const auto [lo, hi] = box_of(frame_x, b.v[e], spacing);
-    bend_box_.push_back({lo, hi});
-    bend_near_.push_back(near(bend_box_.back()));
+    const auto& v = b.v[e];
+    bends_.push_back(element({{at(v[0]), at(v[1]), 0.5}, {at(v[1]), at(v[2]), 0.5}}));
   }
 }
 
@@ -77,20 +85,19 @@ double PieceMap::scale(int square, const Eigen::VectorXd& t) const {
   return lo_[v] + std::clamp(t[v], 0.0, 1.0) * (hi_[v] - lo_[v]);
 }
 
-PieceMap::Coverage PieceMap::coverage(const Box& box, const std::vector<int>& near,
-                                      const Eigen::VectorXd& t) const {
+PieceMap::Coverage PieceMap::coverage(const Element& element, const Eigen::VectorXd& t) const {
   Coverage out;
-  for (int k : near) {
+  for (int k : element.near) {
     const StencilSquare& q = squares_[k];
-    const double s = scale(k, t);
-    const auto [ox, dx] = overlap(box.lo.x(), box.hi.x(), q.centre.x(), 0.5 * s * q.cell.x());
-    const auto [oy, dy] = overlap(box.lo.y(), box.hi.y(), q.centre.y(), 0.5 * s * q.cell.y());
-    out.fraction += ox * oy;
+    const Vec2 half = 0.5 * scale(k, t) * q.cell;
     const int v = variable_[k];
-    if (v < 0 || ox * oy <= 0.0) continue;
-    // d/dt through the half sides h = s c / 2, s = lo + t (hi - lo).
-    const double ds = hi_[v] - lo_[v];
-    const double rate = (dx * oy * 0.5 * q.cell.x() + ox * dy * 0.5 * q.cell.y()) * ds;
+    double rate = 0.0;
+    for (const Segment& g : element.segments) {
+      const Clip c = clip(g.a, g.b, q.centre, half);
+      out.fraction += g.weight * c.share;
+      // d/dt through the half sides h = s c / 2, s = lo + t (hi - lo).
+      if (v >= 0) rate += g.weight * c.rate.dot(0.5 * q.cell) * (hi_[v] - lo_[v]);
+    }
     if (rate != 0.0) out.rate.emplace_back(v, rate);
   }
   out.fraction = std::min(out.fraction, 1.0);  // pieces do not overlap: only round-off
@@ -98,19 +105,19 @@ PieceMap::Coverage PieceMap::coverage(const Box& box, const std::vector<int>& ne
 }
 
 PieceMap::Coverage PieceMap::spring_coverage(int s, const Eigen::VectorXd& t) const {
-  return coverage(spring_box_[s], spring_near_[s], t);
+  return coverage(springs_[s], t);
 }
 
 PieceMap::Coverage PieceMap::bend_coverage(int e, const Eigen::VectorXd& t) const {
-  return coverage(bend_box_[e], bend_near_[e], t);
+  return coverage(bends_[e], t);
 }
 
 void PieceMap::apply(Membrane& m, const Eigen::VectorXd& t) const {
   if (t.size() != size()) throw std::invalid_argument("one variable per free piece");
-  for (size_t s = 0; s < spring_box_.size(); ++s)
+  for (size_t s = 0; s < springs_.size(); ++s)
     if (!added_[s])
       set_spring_fraction(m, static_cast<int>(s), spring_coverage(static_cast<int>(s), t).fraction);
-  for (size_t e = 0; e < bend_box_.size(); ++e)
+  for (size_t e = 0; e < bends_.size(); ++e)
     set_bend_fraction(m, static_cast<int>(e), bend_coverage(static_cast<int>(e), t).fraction);
 }
 
@@ -118,11 +125,11 @@ Eigen::VectorXd PieceMap::pull_back(const Membrane& m, const Eigen::VectorXd& t,
                                     const Points& w) const {
   const ElementRates r = element_force_sensitivity(m, x, w);
   Eigen::VectorXd out = Eigen::VectorXd::Zero(size());
-  for (size_t s = 0; s < spring_box_.size(); ++s)
+  for (size_t s = 0; s < springs_.size(); ++s)
     if (!added_[s])
       for (const auto& [v, d] : spring_coverage(static_cast<int>(s), t).rate)
         out[v] += r.spring[static_cast<Eigen::Index>(s)] * d;
-  for (size_t e = 0; e < bend_box_.size(); ++e)
+  for (size_t e = 0; e < bends_.size(); ++e)
     for (const auto& [v, d] : bend_coverage(static_cast<int>(e), t).rate)
       out[v] += r.bend[static_cast<Eigen::Index>(e)] * d;
   return out;

@@ -2,11 +2,12 @@
 // Stage 3's design variables: the sizes of a stencil's pieces (design/stencil_layout.hpp). Each
 // piece that is neither a filled cell nor absent gets one variable t in [0, 1], its sides
 // running from the minimum feature (t = 0) to the cell less the minimum feature (t = 1), so
-// every value can be cut. A spring or bending element takes as its resin fraction the share of
-// its box — its span on the frame, widened by half a grid spacing each side where it has no
-// width — that the pieces cover: the sampled share of the element's segment (what a run uses)
-// jumps when a piece's edge passes a row of particles, the box's share moves continuously, so
-// the released form is differentiable in the sizes (docs/inverse_design.md, stage 3).
+// every value can be cut. A spring takes as its resin fraction the share of its segment on the
+// frame inside the pieces, a bending element the mean of its two segments' — what impregnation
+// gives them (model/membrane.cpp), exactly where a run samples it — so that the branch found
+// here is the real stencil's. The share moves continuously while a piece's edge crosses a
+// segment, and jumps when the edge passes a segment parallel to it; the gradient is that of the
+// continuous part (docs/inverse_design.md, stage 3).
 #include <vector>
 
 #include "membra/design/resin_map.hpp"
@@ -36,10 +37,15 @@ class PieceMap final : public ResinMap {
   Coverage bend_coverage(int e, const Eigen::VectorXd& t) const;
 
  private:
-  struct Box {
-    Vec2 lo, hi;
+  struct Segment {
+    Vec2 a, b;      // m, frame coordinates
+    double weight;  // its share of the element's fraction
   };
-  Coverage coverage(const Box& box, const std::vector<int>& near, const Eigen::VectorXd& t) const;
+  struct Element {
+    std::vector<Segment> segments;
+    std::vector<int> near;  // the squares whose cell meets the element's bounding box
+  };
+  Coverage coverage(const Element& element, const Eigen::VectorXd& t) const;
   double scale(int square, const Eigen::VectorXd& t) const;
 
   std::vector<StencilSquare> squares_;
@@ -47,9 +53,8 @@ class PieceMap final : public ResinMap {
   std::vector<int> variable_;    // per square: its variable, or -1 (a filled cell, fixed)
   std::vector<int> free_;        // per variable: its square
   std::vector<double> lo_, hi_;  // per variable: the scale at t = 0 and t = 1
-  std::vector<Box> spring_box_, bend_box_;
-  std::vector<std::vector<int>> spring_near_, bend_near_;  // squares whose cell meets the box
-  std::vector<bool> added_;                                // springs not part of the sheet
+  std::vector<Element> springs_, bends_;
+  std::vector<bool> added_;  // springs not part of the sheet
 };
 
 }  // namespace membra
