@@ -43,8 +43,9 @@ def design(target, out=None, progress=None, base_dir=None, cache=True):
     progress: None or a callable taking a dict per forward simulation {"index", "stage",
         "rms_error", "max_error", "resin_share", "pieces", "density_scale", "seconds", "best",
         "note", "objective", "gradient_norm"}; with "method": "adjoint" the density iterates have
-        stage "density" (rms_error: to the particles' own target points) and the stencil trials
-        "stencil" (density_scale: the multiple of the designed densities laid out).
+        stage "density" (rms_error: to the particles' own target points), the stencil trials
+        "stencil" (density_scale: the multiple of the designed densities laid out), the piece
+        sizes' iterates "pieces" (as "density") and the sized stencil "stencil" again.
     cache: keep the adjoint method's stencil calibration in $MEMBRA_CACHE_DIR (else
         ~/.cache/membra) and read it back for later designs on the same sheet, as
         `membra design` does; False measures it every time.

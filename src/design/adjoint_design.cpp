@@ -81,33 +81,34 @@ bool better_trial(const StencilTrial& a, const StencilTrial& b) {
   return a.rms < b.rms;
 }
 
-// Stage 3's last step: the best trial's piece sizes optimised by the adjoint along the branch it
-// released into (design/piece_map.hpp; warm-started from its form, so the crumpled minimum it
-// found is followed, not another), then released from flat as `membra run` would. Kept when
-// that run is the closer to the target.
-void refine_pieces(const DesignSpec& spec, const Scene& scene, StencilTrial& best, DesignResult& r,
-                   const Stopwatch& clock, double deadline,
-                   const std::function<void(const DesignIteration&)>& progress) {
-  if (spec.piece_evaluations <= 0 || best.stencil.squares.empty() || !best.note.empty() ||
-      clock.seconds() >= deadline)
-    return;
+// The best trial's piece sizes optimised by the adjoint along the branch it released into
+// (design/piece_map.hpp; warm-started from its form, so the crumpled minimum it found is
+// followed, not another). Nothing when no size did better; else the sized stencil and the note
+// saying how close its branch came.
+struct SizedStencil {
+  Stencil stencil;
+  std::string note;
+};
+std::optional<SizedStencil> size_pieces(
+    const DesignSpec& spec, const Scene& scene, const StencilTrial& best, DesignResult& r,
+    double seconds, const std::function<void(const DesignIteration&)>& progress) {
   const PieceMap* map = nullptr;
   DensityProblem problem(scene, [&](const Membrane& m, const Points& frame_x) {
     auto made = std::make_unique<PieceMap>(best.stencil, spec.layout.min_feature, m, frame_x);
     map = made.get();
     return made;
   });
-  if (map->size() == 0) return;  // only filled cells: nothing to size
+  if (map->size() == 0) return {};  // only filled cells: nothing to size
   const Flattening flat =
       spec.flattening == "projection" ? Flattening::projection : Flattening::conformal;
   problem.set_target(
       target_correspondence(r.target, problem.frame_positions(), problem.area_weights(), flat),
       r.target.diameter, 0.0);
   const Eigen::VectorXd start = map->variables();
-  if (!problem.solve_from(start, best.run.prepared.membrane.state.x)) return;
+  if (!problem.solve_from(start, best.run.prepared.membrane.state.x)) return {};
   DensityOptimizerOptions o;
   o.evaluations = spec.piece_evaluations;
-  o.max_seconds = std::max(1.0, deadline - clock.seconds());
+  o.max_seconds = std::max(1.0, seconds);
   o.relative_change = 1e-6;
   const int first = static_cast<int>(r.history.size());
   const DensityOptimum sized = optimize_density(problem, start, o, [&](const DensityIterate& it) {
@@ -115,25 +116,39 @@ void refine_pieces(const DesignSpec& spec, const Scene& scene, StencilTrial& bes
     r.history.back().index = first + it.index;
     if (progress) progress(r.history.back());
   });
-  if (sized.rho == start) return;  // no size did better along the branch
+  if (sized.rho == start) return {};
   // How close the branch itself came, by the same measure as every stencil's error: whether a
-  // release from flat keeps it is the question the next run answers.
+  // release from flat keeps it is what the next run says.
   std::ostringstream note;
   note << "piece sizes refined";
-  if (problem.solve(sized.rho))
+  if (problem.solve(sized.rho)) {
+    const Membrane& m = problem.membrane();
     note << " (on the branch: "
-         << 100.0 *
-                compare_shapes(problem.positions(), problem.membrane().sheet.triangles, r.target)
-                    .rms /
+         << 100.0 * compare_shapes(problem.positions(), m.sheet.triangles, r.target).rms /
                 r.target.diameter
          << " %)";
+  }
+  return SizedStencil{map->stencil(sized.rho), note.str()};
+}
+
+// Stage 3's last step: the best trial's pieces sized (size_pieces), then released from flat as
+// `membra run` would; kept when that run is the closer to the target.
+void refine_pieces(const DesignSpec& spec, const Scene& scene, StencilTrial& best,
+                   double best_scale, DesignResult& r, const Stopwatch& clock, double deadline,
+                   const std::function<void(const DesignIteration&)>& progress) {
+  if (spec.piece_evaluations <= 0 || best.stencil.squares.empty() || !best.note.empty() ||
+      clock.seconds() >= deadline)
+    return;
+  std::optional<SizedStencil> sized =
+      size_pieces(spec, scene, best, r, deadline - clock.seconds(), progress);
+  if (!sized) return;
   const double began = clock.seconds();
-  StencilTrial t = simulate_stencil(spec, r.target, map->stencil(sized.rho));
+  StencilTrial t = simulate_stencil(spec, r.target, std::move(sized->stencil));
   r.history.push_back(
       trial_iteration(t, static_cast<int>(r.history.size()), clock.seconds() - began));
   DesignIteration& it = r.history.back();
-  if (!t.note.empty()) note << ", " << t.note;
-  it.note = note.str();
+  it.scale = best_scale;  // the densities' multiple of the trial it was sized from
+  it.note = t.note.empty() ? sized->note : sized->note + ", " + t.note;
   const bool simulated = t.run.prepared.membrane.state.x.cols() > 0 && std::isfinite(t.rms);
   if (simulated && better_trial(t, best)) {
     it.best = true;
@@ -155,6 +170,7 @@ void lay_out_and_simulate(const DesignSpec& spec, const Scene& scene, DesignResu
   r.calibration_density = calibration.density;
   r.calibration_cached = calibration.cached;
   std::optional<StencilTrial> best;
+  double best_scale = 1.0;
   const int trials =
       std::clamp(spec.stencil_trials, 1, static_cast<int>(std::size(kStencilScales)));
   for (int k = 0; k < trials && (k == 0 || clock.seconds() < deadline); ++k) {
@@ -171,13 +187,14 @@ void lay_out_and_simulate(const DesignSpec& spec, const Scene& scene, DesignResu
     if (simulated && (!best || better_trial(t, *best))) {
       r.history.back().best = true;
       best = std::move(t);
+      best_scale = scale;
     }
     if (progress) progress(r.history.back());
     if (k == 0 && !simulated)
       throw InputError(spec.file.string(),
                        "the designed stencil could not be simulated: " + t.note);
   }
-  refine_pieces(spec, scene, *best, r, clock, deadline, progress);
+  refine_pieces(spec, scene, *best, best_scale, r, clock, deadline, progress);
   if (!best->note.empty()) {
     if (!r.message.empty()) r.message += ' ';
     r.message += "The stencil's simulation ";
