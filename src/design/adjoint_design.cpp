@@ -106,9 +106,10 @@ std::optional<SizedStencil> size_pieces(
       r.target.diameter, 0.0);
   const Eigen::VectorXd start = map->variables();
   if (!problem.solve_from(start, best.run.prepared.membrane.state.x)) return {};
+  problem.keep_to_branch();
   DensityOptimizerOptions o;
   o.evaluations = spec.piece_evaluations;
-  o.max_seconds = std::max(1.0, seconds);
+  o.max_seconds = seconds;
   o.relative_change = 1e-6;
   const int first = static_cast<int>(r.history.size());
   const DensityOptimum sized = optimize_density(problem, start, o, [&](const DensityIterate& it) {
@@ -134,20 +135,22 @@ std::optional<SizedStencil> size_pieces(
 // Stage 3's last step: the best trial's pieces sized (size_pieces), then released from flat as
 // `membra run` would; kept when that run is the closer to the target.
 void refine_pieces(const DesignSpec& spec, const Scene& scene, StencilTrial& best,
-                   double best_scale, DesignResult& r, const Stopwatch& clock, double deadline,
-                   const std::function<void(const DesignIteration&)>& progress) {
+                   const DesignIteration& trial, DesignResult& r, const Stopwatch& clock,
+                   double deadline, const std::function<void(const DesignIteration&)>& progress) {
+  // The sized stencil's run from flat takes about as long as the trial's: it is kept out of the
+  // sizing's time, so that the design ends within its budget.
+  const double seconds = deadline - clock.seconds() - trial.seconds;
   if (spec.piece_evaluations <= 0 || best.stencil.squares.empty() || !best.note.empty() ||
-      clock.seconds() >= deadline)
+      seconds <= 0.0)
     return;
-  std::optional<SizedStencil> sized =
-      size_pieces(spec, scene, best, r, deadline - clock.seconds(), progress);
+  std::optional<SizedStencil> sized = size_pieces(spec, scene, best, r, seconds, progress);
   if (!sized) return;
   const double began = clock.seconds();
   StencilTrial t = simulate_stencil(spec, r.target, std::move(sized->stencil));
   r.history.push_back(
       trial_iteration(t, static_cast<int>(r.history.size()), clock.seconds() - began));
   DesignIteration& it = r.history.back();
-  it.scale = best_scale;  // the densities' multiple of the trial it was sized from
+  it.scale = trial.scale;  // the densities' multiple of the trial it was sized from
   it.note = t.note.empty() ? sized->note : sized->note + ", " + t.note;
   const bool simulated = t.run.prepared.membrane.state.x.cols() > 0 && std::isfinite(t.rms);
   if (simulated && better_trial(t, best)) {
@@ -170,7 +173,7 @@ void lay_out_and_simulate(const DesignSpec& spec, const Scene& scene, DesignResu
   r.calibration_density = calibration.density;
   r.calibration_cached = calibration.cached;
   std::optional<StencilTrial> best;
-  double best_scale = 1.0;
+  DesignIteration best_trial;
   const int trials =
       std::clamp(spec.stencil_trials, 1, static_cast<int>(std::size(kStencilScales)));
   for (int k = 0; k < trials && (k == 0 || clock.seconds() < deadline); ++k) {
@@ -187,14 +190,14 @@ void lay_out_and_simulate(const DesignSpec& spec, const Scene& scene, DesignResu
     if (simulated && (!best || better_trial(t, *best))) {
       r.history.back().best = true;
       best = std::move(t);
-      best_scale = scale;
+      best_trial = r.history.back();
     }
     if (progress) progress(r.history.back());
     if (k == 0 && !simulated)
       throw InputError(spec.file.string(),
                        "the designed stencil could not be simulated: " + t.note);
   }
-  refine_pieces(spec, scene, *best, best_scale, r, clock, deadline, progress);
+  refine_pieces(spec, scene, *best, best_trial, r, clock, deadline, progress);
   if (!best->note.empty()) {
     if (!r.message.empty()) r.message += ' ';
     r.message += "The stencil's simulation ";

@@ -33,12 +33,12 @@ DensityProblem::DensityProblem(Scene scene, const MapMaker& make_map) : scene_(s
   const auto& protocol = scene_.protocol;
   if (protocol.size() != 3 || !protocol[0].as<StretchStep>() || !protocol[1].as<ImpregnateStep>() ||
       !protocol[2].as<ReleaseStep>())
-    throw std::invalid_argument("a density design runs stretch, impregnate, release");
+    throw std::invalid_argument("a design by the adjoint runs stretch, impregnate, release");
   auto* resin = scene_.protocol[1].as<ImpregnateStep>();
   if (resin->bilayer)
     throw std::invalid_argument("a density design does not yet place a bilayer coat");
   if (!solver_info(scene_.simulation.solver).equilibrium)
-    throw std::invalid_argument("a density design needs an equilibrium solver");
+    throw std::invalid_argument("a design by the adjoint needs an equilibrium solver");
   // Resin everywhere (a polygon beyond the frame): each element learns its resin's stiffness and
   // length at impregnation; the variables then set only the fractions.
   const Box2 frame = scene_frame(scene_);
@@ -78,8 +78,7 @@ bool DensityProblem::release_from_frame(const Eigen::VectorXd& rho) {
 }
 
 bool DensityProblem::solve(const Eigen::VectorXd& rho) {
-  if (rho.size() != map_->size())
-    throw std::invalid_argument("one value per design variable (a density per cell)");
+  if (rho.size() != map_->size()) throw std::invalid_argument("one value per design variable");
   if (released_) {
     if (anchor_.cols() == p_.membrane.state.x.cols()) {
       p_.membrane.state.x = anchor_;
@@ -88,7 +87,7 @@ bool DensityProblem::solve(const Eigen::VectorXd& rho) {
     map_->apply(p_.membrane, rho);
     const SolveReport r = solve_scene_step(scene_, p_, p_.membrane.state, "design", {});
     iterations_ += r.iterations;
-    if (r.converged) return true;
+    if (r.converged || on_branch_only_) return r.converged;
   }
   return release_from_frame(rho);
 }
@@ -98,8 +97,7 @@ void DensityProblem::anchor() {
 }
 
 bool DensityProblem::solve_from(const Eigen::VectorXd& rho, const Points& x) {
-  if (rho.size() != map_->size())
-    throw std::invalid_argument("one value per design variable (a density per cell)");
+  if (rho.size() != map_->size()) throw std::invalid_argument("one value per design variable");
   if (x.cols() != frame_x_.cols())
     throw std::invalid_argument("a start needs one position per particle");
   p_ = stretched_;

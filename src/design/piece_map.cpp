@@ -1,9 +1,8 @@
 #include "membra/design/piece_map.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
-
-#include "membra/design/resin_density.hpp"
 
 namespace membra {
 namespace {

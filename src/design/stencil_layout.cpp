@@ -29,8 +29,9 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
       // A square of the cell's shape with area share rho; too small a piece is dropped, too
       // narrow a gap closed.
       double scale = std::sqrt(rho);
-      if (scale * std::min(cx, cy) < w) continue;
-      if ((1.0 - scale) * std::min(cx, cy) < w) scale = 1.0;
+      const double fx = scale * cx, fy = scale * cy;
+      if (std::min(fx, fy) < w) continue;
+      if (cx - fx < w || cy - fy < w) scale = 1.0;
       squares.push_back({centre, Vec2(cx, cy), scale});
     }
   return stencil_of(squares, total);

@@ -237,40 +237,61 @@ struct PieceProblem {
   }
 };
 
-// A piece's cover of an element is the share of the element's segment inside it, as
-// impregnation gives it: 1 for a spring within the piece, 0 far from it, in between across its
-// edge — against the 16-sample share a run uses (within 1/16), and its derivative in the size
-// against central differences (1e-6).
+// A piece's cover of an element is the exact share of the element's segment inside it (a
+// bending element: the mean of its two segments'): 1 for a spring within the piece, 0 far from
+// it, in between across its edge — against the sampled share a run uses (16 points per spring,
+// 8 per bending segment: within 1/16 and 1/8), and its derivative in every piece's size against
+// central differences (1e-6), pieces the element does not list included.
 TEST(PieceMap, CoversEachElementAsImpregnationDoesAndDifferentiatesIt) {
   PieceProblem pp(0.4, 17);
   ASSERT_EQ(pp.map->size(), 16);
   const Eigen::VectorXd t = random_densities(16, 0.1, 0.9, 11);
   ASSERT_TRUE(pp.problem->solve(t));
-  const Membrane& m = pp.problem->membrane();
-  const Springs& sp = m.sheet.model.springs;
+  const Model& model = pp.problem->membrane().sheet.model;
   const Points& frame = pp.problem->frame_positions();
   const Stencil stencil = pp.map->stencil(t);
-  int inside = 0, outside = 0, across = 0;
+  auto at = [&](int p) -> Vec2 { return frame.col(p).head<2>(); };
+  // d fraction / d t_v for every v, by central differences, against the listed rates.
   double worst = 0.0;
-  for (int s = 0; s < sp.size(); ++s) {
-    const PieceMap::Coverage c = pp.map->spring_coverage(s, t);
-    ASSERT_GE(c.fraction, 0.0);
-    ASSERT_LE(c.fraction, 1.0);
-    const Vec2 a = frame.col(sp.a[s]).head<2>(), b = frame.col(sp.b[s]).head<2>();
-    EXPECT_NEAR(c.fraction, fraction_inside(*stencil.pattern, a, b), 1.0 / 16 + 1e-9) << s;
-    inside += c.fraction == 1.0;
-    outside += c.fraction == 0.0;
-    for (const auto& [v, d] : c.rate) {
-      ++across;
+  auto check_rates = [&](const PieceMap::Coverage& c, auto coverage_at) {
+    for (int v = 0; v < 16; ++v) {
       const double h = 1e-7;
       Eigen::VectorXd up = t, down = t;
       up[v] += h;
       down[v] -= h;
-      const double fd =
-          (pp.map->spring_coverage(s, up).fraction - pp.map->spring_coverage(s, down).fraction) /
-          (2 * h);
+      const double fd = (coverage_at(up) - coverage_at(down)) / (2 * h);
+      double d = 0.0;
+      for (const auto& [u, rate] : c.rate)
+        if (u == v) d += rate;
       worst = std::max(worst, std::abs(fd - d) / std::max(1.0, std::abs(d)));
     }
+  };
+  int inside = 0, outside = 0, across = 0;
+  const Springs& sp = model.springs;
+  for (int s = 0; s < sp.size(); ++s) {
+    const PieceMap::Coverage c = pp.map->spring_coverage(s, t);
+    ASSERT_GE(c.fraction, 0.0);
+    ASSERT_LE(c.fraction, 1.0);
+    EXPECT_NEAR(c.fraction, fraction_inside(*stencil.pattern, at(sp.a[s]), at(sp.b[s])),
+                1.0 / 16 + 1e-9)
+        << s;
+    inside += c.fraction == 1.0;
+    outside += c.fraction == 0.0;
+    if (c.fraction <= 0.0 || c.fraction >= 1.0) continue;
+    ++across;
+    check_rates(c,
+                [&](const Eigen::VectorXd& u) { return pp.map->spring_coverage(s, u).fraction; });
+  }
+  const Bending& b = model.bending;
+  for (int e = 0; e < b.size(); ++e) {
+    const PieceMap::Coverage c = pp.map->bend_coverage(e, t);
+    const auto& v = b.v[e];
+    const double sampled = 0.5 * (fraction_inside(*stencil.pattern, at(v[0]), at(v[1]), 8) +
+                                  fraction_inside(*stencil.pattern, at(v[1]), at(v[2]), 8));
+    EXPECT_NEAR(c.fraction, sampled, 1.0 / 8 + 1e-9) << e;
+    if (c.fraction > 0.0 && c.fraction < 1.0 && e % 4 == 0)
+      check_rates(c,
+                  [&](const Eigen::VectorXd& u) { return pp.map->bend_coverage(e, u).fraction; });
   }
   EXPECT_GT(inside, 0);
   EXPECT_GT(outside, 0);

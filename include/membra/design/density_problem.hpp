@@ -66,6 +66,9 @@ class DensityProblem {
   // and a line search that steps back would not find the form it left. Anchored at the best
   // design so far, the form is a function of the densities along the branch through it.
   void anchor();
+  // From now on a failed warm start is a failed solve, not a release from the frame (which may
+  // end on another branch): for refining the branch a solve_from found.
+  void keep_to_branch() { on_branch_only_ = true; }
   const Points& positions() const { return p_.membrane.state.x; }
   const Membrane& membrane() const { return p_.membrane; }
 
@@ -82,6 +85,7 @@ class DensityProblem {
   Correspondence target_;
   double scale_ = 1.0, smoothing_ = 0.0;
   bool released_ = false;
+  bool on_branch_only_ = false;
   Points anchor_;  // where warm starts begin (empty: the last equilibrium)
   long iterations_ = 0;
   int restarts_ = 0;

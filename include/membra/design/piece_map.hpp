@@ -2,12 +2,13 @@
 // Stage 3's design variables: the sizes of a stencil's pieces (design/stencil_layout.hpp). Each
 // piece that is neither a filled cell nor absent gets one variable t in [0, 1], its sides
 // running from the minimum feature (t = 0) to the cell less the minimum feature (t = 1), so
-// every value can be cut. A spring takes as its resin fraction the share of its segment on the
-// frame inside the pieces, a bending element the mean of its two segments' — what impregnation
-// gives them (model/membrane.cpp), exactly where a run samples it — so that the branch found
-// here is the real stencil's. The share moves continuously while a piece's edge crosses a
-// segment, and jumps when the edge passes a segment parallel to it; the gradient is that of the
-// continuous part (docs/inverse_design.md, stage 3).
+// every value can be cut. A spring takes as its resin fraction the exact share of its segment on
+// the frame inside the pieces, a bending element the mean of its two segments' — the shares
+// that impregnation samples at 16 and 8 points (model/membrane.cpp), so that the branch followed
+// here is, within that sampling, the real stencil's. The share moves continuously while a
+// piece's edge crosses a segment, and jumps when the edge passes a segment parallel to it; the
+// gradient is that of the continuous part (docs/inverse_design.md, stage 3).
+#include <utility>
 #include <vector>
 
 #include "membra/design/resin_map.hpp"

@@ -28,18 +28,6 @@ DensitySites density_sites(const Membrane& m, const Points& x_frame, const Densi
 // updates their stiffness and rest length (at the membrane's present release level).
 void apply_density(Membrane& m, const DensitySites& sites, const Eigen::VectorXd& rho);
 
-// Sets one spring's (not an added one's) or bending element's resin fraction and the stiffness
-// and rest length that follow by the process's composite rules.
-void set_spring_fraction(Membrane& m, int s, double f);
-void set_bend_fraction(Membrane& m, int e, double f);
-
-// For every spring and bending element, d/df of (grad E(x) . w) in its resin fraction f: what
-// any design variable's sensitivity is made of (added springs: 0).
-struct ElementRates {
-  Eigen::VectorXd spring, bend;
-};
-ElementRates element_force_sensitivity(const Membrane& m, const Points& x, const Points& w);
-
 // For each cell c, d/d rho_c of (grad E(x) . w): how the forces' virtual work along the
 // displacement field w changes with the cell's density, at positions x. With w the adjoint
 // solution this is the equilibrium's sensitivity term of the adjoint method.

@@ -4,11 +4,24 @@
 // variables. Two maps exist: a density per cell (design/resin_density.hpp, stage 2) and the sizes
 // of a stencil's pieces (design/piece_map.hpp, stage 3). The density problem
 // (design/density_problem.hpp) solves and differentiates the released equilibrium for either.
+// Both set fractions and take sensitivities per element by the functions below.
 #include <Eigen/Core>
 
 #include "membra/model/membrane.hpp"
 
 namespace membra {
+
+// Sets one spring's (not an added one's) or bending element's resin fraction and the stiffness
+// and rest length that follow by the process's composite rules (model/membrane.cpp).
+void set_spring_fraction(Membrane& m, int s, double f);
+void set_bend_fraction(Membrane& m, int e, double f);
+
+// For every spring and bending element, d/df of (grad E(x) . w) in its resin fraction f: what
+// any design variable's sensitivity is made of (added springs: 0).
+struct ElementRates {
+  Eigen::VectorXd spring, bend;
+};
+ElementRates element_force_sensitivity(const Membrane& m, const Points& x, const Points& w);
 
 class ResinMap {
  public:
@@ -22,10 +35,9 @@ class ResinMap {
   virtual Eigen::VectorXd pull_back(const Membrane& m, const Eigen::VectorXd& p, const Points& x,
                                     const Points& w) const = 0;
   // A regularising term added to the objective with `weight`, and its gradient (none: 0).
-  virtual double regularization(const Eigen::VectorXd& p, double weight,
+  virtual double regularization(const Eigen::VectorXd& p, double /*weight*/,
                                 Eigen::VectorXd* gradient) const {
     *gradient = Eigen::VectorXd::Zero(p.size());
-    (void)weight;
     return 0.0;
   }
 };
