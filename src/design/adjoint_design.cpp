@@ -81,6 +81,25 @@ bool better_trial(const StencilTrial& a, const StencilTrial& b) {
   return a.rms < b.rms;
 }
 
+Flattening flattening_of(const DesignSpec& spec) {
+  return spec.flattening == "projection" ? Flattening::projection : Flattening::conformal;
+}
+
+// Every particle's point on the target through the design's flattening, the objective made
+// dimensionless by the target's diameter: stage 2's and the piece sizing's target alike.
+void aim_at_target(DensityProblem& problem, const DesignSpec& spec, const TargetSurface& target,
+                   double smoothing) {
+  problem.set_target(target_correspondence(target, problem.frame_positions(),
+                                           problem.area_weights(), flattening_of(spec)),
+                     target.diameter, smoothing);
+}
+
+// A trial that ended with a form whose error could be measured (not one that could not be
+// simulated, or blew up): only such a trial can become the design.
+bool simulated(const StencilTrial& t) {
+  return t.run.prepared.membrane.state.x.cols() > 0 && std::isfinite(t.rms);
+}
+
 // The best trial's piece sizes optimised by the adjoint along the branch it released into
 // (design/piece_map.hpp; warm-started from its form, so the crumpled minimum it found is
 // followed, not another). Nothing when no size did better; else the sized stencil and the note
@@ -99,11 +118,7 @@ std::optional<SizedStencil> size_pieces(
     return made;
   });
   if (map->size() == 0) return {};  // only filled cells: nothing to size
-  const Flattening flat =
-      spec.flattening == "projection" ? Flattening::projection : Flattening::conformal;
-  problem.set_target(
-      target_correspondence(r.target, problem.frame_positions(), problem.area_weights(), flat),
-      r.target.diameter, 0.0);
+  aim_at_target(problem, spec, r.target, 0.0);
   const Eigen::VectorXd start = map->variables();
   if (!problem.solve_from(start, best.run.prepared.membrane.state.x)) return {};
   problem.keep_to_branch();
@@ -152,8 +167,7 @@ void refine_pieces(const DesignSpec& spec, const Scene& scene, StencilTrial& bes
   DesignIteration& it = r.history.back();
   it.scale = trial.scale;  // the densities' multiple of the trial it was sized from
   it.note = t.note.empty() ? sized->note : sized->note + ", " + t.note;
-  const bool simulated = t.run.prepared.membrane.state.x.cols() > 0 && std::isfinite(t.rms);
-  if (simulated && better_trial(t, best)) {
+  if (simulated(t) && better_trial(t, best)) {
     it.best = true;
     best = std::move(t);
   }
@@ -185,15 +199,14 @@ void lay_out_and_simulate(const DesignSpec& spec, const Scene& scene, DesignResu
     r.history.push_back(
         trial_iteration(t, static_cast<int>(r.history.size()), clock.seconds() - start));
     r.history.back().scale = scale;
-    // No form, or a blown-up one, has no error to report (never adopted).
-    const bool simulated = t.run.prepared.membrane.state.x.cols() > 0 && std::isfinite(t.rms);
-    if (simulated && (!best || better_trial(t, *best))) {
+    const bool settled_form = simulated(t);
+    if (settled_form && (!best || better_trial(t, *best))) {
       r.history.back().best = true;
       best = std::move(t);
       best_trial = r.history.back();
     }
     if (progress) progress(r.history.back());
-    if (k == 0 && !simulated)
+    if (k == 0 && !settled_form)
       throw InputError(spec.file.string(),
                        "the designed stencil could not be simulated: " + t.note);
   }
@@ -221,13 +234,9 @@ void design_by_adjoint(const DesignSpec& spec, DesignResult& r,
   const Box2 frame{Vec2::Zero(), Vec2(spec.frame, spec.frame)};
   DensityProblem problem(scene, make_density_field(frame, spec.density_cell, 0.5));
   const TargetSurface& target = r.target;
-  const Flattening flat =
-      spec.flattening == "projection" ? Flattening::projection : Flattening::conformal;
-  problem.set_target(
-      target_correspondence(target, problem.frame_positions(), problem.area_weights(), flat),
-      target.diameter, spec.smoothing);
-  const MetricStart start =
-      metric_start(target, problem.frame_positions(), problem.field(), spec.lambda, flat);
+  aim_at_target(problem, spec, target, spec.smoothing);
+  const MetricStart start = metric_start(target, problem.frame_positions(), problem.field(),
+                                         spec.lambda, flattening_of(spec));
   note_reach(start, r);
 
   DensityOptimizerOptions o;

@@ -25,9 +25,7 @@ DensityProblem::DensityProblem(Scene scene, DensityField field)
     : DensityProblem(std::move(scene), [&field](const Membrane& m, const Points& frame_x) {
         DensitySites sites = density_sites(m, frame_x, field);
         return std::make_unique<DensityMap>(field, std::move(sites));
-      }) {
-  field_ = static_cast<const DensityMap&>(*map_).field();
-}
+      }) {}
 
 DensityProblem::DensityProblem(Scene scene, const MapMaker& make_map) : scene_(std::move(scene)) {
   const auto& protocol = scene_.protocol;
@@ -77,8 +75,18 @@ bool DensityProblem::release_from_frame(const Eigen::VectorXd& rho) {
   return released_;
 }
 
-bool DensityProblem::solve(const Eigen::VectorXd& rho) {
+const DensityField& DensityProblem::field() const {
+  static const DensityField none;
+  const auto* densities = dynamic_cast<const DensityMap*>(map_.get());
+  return densities ? densities->field() : none;
+}
+
+void DensityProblem::check_variables(const Eigen::VectorXd& rho) const {
   if (rho.size() != map_->size()) throw std::invalid_argument("one value per design variable");
+}
+
+bool DensityProblem::solve(const Eigen::VectorXd& rho) {
+  check_variables(rho);
   if (released_) {
     if (anchor_.cols() == p_.membrane.state.x.cols()) {
       p_.membrane.state.x = anchor_;
@@ -97,7 +105,7 @@ void DensityProblem::anchor() {
 }
 
 bool DensityProblem::solve_from(const Eigen::VectorXd& rho, const Points& x) {
-  if (rho.size() != map_->size()) throw std::invalid_argument("one value per design variable");
+  check_variables(rho);
   if (x.cols() != frame_x_.cols())
     throw std::invalid_argument("a start needs one position per particle");
   p_ = stretched_;

@@ -30,6 +30,26 @@ json small_design(const json& target, int evaluations = 6) {
           {"design", {{"evaluations", evaluations}, {"budget", 600}, {"solver", "newton"}}}};
 }
 
+// A small design by the adjoint with `trials` stencil trials and `pieces` piece evaluations.
+json small_adjoint_design(const json& target, int trials, int pieces) {
+  json design = small_design(target, 4);
+  design["design"].update({{"method", "adjoint"},
+                           {"density_cell", 25},
+                           {"stencil_trials", trials},
+                           {"piece_evaluations", pieces}});
+  return design;
+}
+
+// The scene a design writes, read back as `membra run` would read it, releases into the form the
+// design reports (to 1e-6 of the 0.2 m frame).
+void expect_scene_reproduces_form(const DesignResult& d) {
+  const RunResult again = run_scene(parse_scene(design_scene(d.spec, d.stencil)));
+  const Points& a = d.run.prepared.membrane.state.x;
+  const Points& b = again.prepared.membrane.state.x;
+  ASSERT_EQ(a.cols(), b.cols());
+  EXPECT_LE((a - b).cwiseAbs().maxCoeff(), 1e-6 * 0.2);
+}
+
 // Each kind of target with its resin options (a coat on one face for the cap).
 class DesignKinds : public ::testing::TestWithParam<std::pair<json, json>> {};
 
@@ -111,12 +131,8 @@ INSTANTIATE_TEST_SUITE_P(Targets, AdjointKinds,
 // by 0.85 and 1.15, each simulated from flat; the design is the best that settled, and the
 // report's stencil entries say which scale each was.
 TEST(InverseDesign, TheAdjointKeepsTheBestOfItsStencilTrials) {
-  json design = small_design({{"saddle", {{"size", 150}, {"height", 15}}}}, 4);
-  design["design"].update({{"method", "adjoint"},
-                           {"density_cell", 25},
-                           {"stencil_trials", 3},
-                           {"piece_evaluations", 0}});
-  const DesignResult d = run_design(parse_design(design));
+  const DesignResult d = run_design(
+      parse_design(small_adjoint_design({{"saddle", {{"size", 150}, {"height", 15}}}}, 3, 0)));
   std::vector<const DesignIteration*> stencils;
   for (const DesignIteration& it : d.history)
     if (it.stage == "stencil") stencils.push_back(&it);
@@ -135,11 +151,7 @@ TEST(InverseDesign, TheAdjointKeepsTheBestOfItsStencilTrials) {
   EXPECT_DOUBLE_EQ(d.rms_error, best);
   EXPECT_TRUE(stencils.back()->best == (stencils.back()->rms_error == best));
   // The scene written is the chosen stencil's, whichever trial it was.
-  const RunResult again = run_scene(parse_scene(design_scene(d.spec, d.stencil)));
-  ASSERT_EQ(again.prepared.membrane.state.x.cols(), d.run.prepared.membrane.state.x.cols());
-  EXPECT_LE(
-      (again.prepared.membrane.state.x - d.run.prepared.membrane.state.x).cwiseAbs().maxCoeff(),
-      1e-6 * 0.2);
+  expect_scene_reproduces_form(d);
   std::printf("stencils: %.2f %%, %.2f %%, %.2f %% -> %.2f %%\n", stencils[0]->rms_error,
               stencils[1]->rms_error, stencils[2]->rms_error, d.rms_error);
 }
@@ -148,12 +160,8 @@ TEST(InverseDesign, TheAdjointKeepsTheBestOfItsStencilTrials) {
 // falling along the better trial's branch, then the sized stencil released from flat, carrying
 // that trial's scale; the design is the closer of the two, and its scene reproduces its form.
 TEST(InverseDesign, TheAdjointSizesTheBestTrialsPieces) {
-  json design = small_design({{"cylinder", {{"size", 150}, {"height", 20}}}}, 4);
-  design["design"].update({{"method", "adjoint"},
-                           {"density_cell", 25},
-                           {"stencil_trials", 2},
-                           {"piece_evaluations", 8}});
-  const DesignResult d = run_design(parse_design(design));
+  const DesignResult d = run_design(
+      parse_design(small_adjoint_design({{"cylinder", {{"size", 150}, {"height", 20}}}}, 2, 8)));
   std::vector<const DesignIteration*> pieces, stencils;
   for (size_t k = 0; k < d.history.size(); ++k) {
     const DesignIteration& it = d.history[k];
@@ -176,11 +184,7 @@ TEST(InverseDesign, TheAdjointSizesTheBestTrialsPieces) {
   EXPECT_EQ(stencils[2]->note.rfind("piece sizes refined (on the branch: ", 0), 0u)
       << stencils[2]->note;
   EXPECT_DOUBLE_EQ(d.rms_error, std::min(trial->rms_error, stencils[2]->rms_error));
-  const RunResult again = run_scene(parse_scene(design_scene(d.spec, d.stencil)));
-  ASSERT_EQ(again.prepared.membrane.state.x.cols(), d.run.prepared.membrane.state.x.cols());
-  EXPECT_LE(
-      (again.prepared.membrane.state.x - d.run.prepared.membrane.state.x).cwiseAbs().maxCoeff(),
-      1e-6 * 0.2);
+  expect_scene_reproduces_form(d);
   std::printf("trials %.2f, %.2f %%, sized %.2f %% (%s): objective %.4g -> %.4g\n",
               stencils[0]->rms_error, stencils[1]->rms_error, stencils[2]->rms_error,
               stencils[2]->note.c_str(), pieces.front()->objective, best);
@@ -189,12 +193,7 @@ TEST(InverseDesign, TheAdjointSizesTheBestTrialsPieces) {
 TEST(InverseDesign, TheStencilsSceneReproducesTheReportedForm) {
   const DesignResult d =
       run_design(parse_design(small_design({{"cap", {{"diameter", 160}, {"height", 24}}}}, 2)));
-  // From the scene file it writes, as `membra run` would read it.
-  const RunResult again = run_scene(parse_scene(design_scene(d.spec, d.stencil)));
-  const Points& a = d.run.prepared.membrane.state.x;
-  const Points& b = again.prepared.membrane.state.x;
-  ASSERT_EQ(a.cols(), b.cols());
-  EXPECT_LE((a - b).cwiseAbs().maxCoeff(), 1e-6 * 0.2);
+  expect_scene_reproduces_form(d);
 }
 
 TEST(InverseDesign, AnUnreachableTargetSaysWhyAndGivesItsBestAttempt) {

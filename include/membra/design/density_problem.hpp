@@ -47,7 +47,7 @@ class DensityProblem {
   // (mass shares: area on the paper).
   const Points& frame_positions() const { return frame_x_; }
   Eigen::VectorXd area_weights() const;
-  const DensityField& field() const { return field_; }
+  const DensityField& field() const;  // the density map's cells (empty for other maps)
 
   // The target: the point each particle should reach, and the length that makes the objective
   // dimensionless (e.g. the target's diameter). `smoothing` weighs the map's regularisation
@@ -76,8 +76,8 @@ class DensityProblem {
 
  private:
   bool release_from_frame(const Eigen::VectorXd& rho);
+  void check_variables(const Eigen::VectorXd& rho) const;
   Scene scene_;
-  DensityField field_;
   PreparedScene stretched_;  // stretched and impregnated everywhere, before release
   PreparedScene p_;          // released (the path's set() refers to this one)
   Points frame_x_;
