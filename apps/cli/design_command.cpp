@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "membra/design/design_verdict.hpp"
 #include "membra/io/calibration_store.hpp"
 #include "membra/io/design_files.hpp"
 #include "membra/io/design_reader.hpp"
@@ -50,7 +51,8 @@ int cmd_design(const DesignArgs& args) {
   if (!args.quiet)
     std::cout << "design: rms error " << r.rms_error << " %, max " << r.max_error
               << " % of the target's diameter after " << r.history.size() << " simulations ("
-              << r.seconds << " s); a flat sheet scores " << r.flat_error << " %\nresults in "
+              << r.seconds << " s); a flat sheet scores " << r.flat_error
+              << " %\nverdict: " << design_verdict(r).sentence << "\nresults in "
               << out.dir().string()
               << "/ (scene.json, pattern.svg, pattern.dxf, final.obj, final.ply, "
                  "comparison.png, report.json, report.html)\n";

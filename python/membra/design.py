@@ -9,7 +9,8 @@ from . import _membra
 
 class DesignResult:
     """The best stencil found: rms_error and max_error (% of the target's diameter),
-    flat_error (what a flat sheet scores), reachable and message, the best form's positions
+    flat_error (what a flat sheet scores), verdict (meets_goal, closer_than_flat or
+    no_closer_than_flat, as report.json's design.verdict), reachable and message, the best form's positions
     (n, 3, mm) and triangles, scene (the scene.json dict that reproduces the form through
     membra.run), report (as the design's report.json), write(dir)."""
 
@@ -25,6 +26,7 @@ class DesignResult:
     triangles = property(lambda self: self._native.triangles)
     scene = property(lambda self: self._native.scene)
     report = property(lambda self: self._native.report)
+    verdict = property(lambda self: self.report["design"]["verdict"])
 
     def write(self, dir):
         """Writes what `membra design target FILE --out DIR` writes, all or nothing."""

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "membra/core/units.hpp"
+#include "membra/design/design_verdict.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/report.hpp"
 
@@ -64,12 +65,15 @@ nlohmann::json make_design_report(const DesignResult& d) {
   nlohmann::json report = make_report(d.scene, d.run);
   nlohmann::json iterations = nlohmann::json::array();
   for (const DesignIteration& it : d.history) iterations.push_back(iteration(it));
+  const DesignVerdict verdict = design_verdict(d);
   report["design"] = {
       {"method", d.method},
       {"rms_error", number(d.rms_error)},
       {"max_error", number(d.max_error)},
       {"error_unit", "% of the target's diameter (square: side), after rigid alignment"},
       {"flat_error", d.flat_error},
+      {"verdict", verdict.grade},
+      {"verdict_note", verdict.sentence},
       {"reachable", d.reachable},
       {"message", d.message},
       {"target",

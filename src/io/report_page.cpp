@@ -74,6 +74,7 @@ constexpr Row kRows[] = {
     {"Stress, max", "/stress/max", "MPa", "tension > 0"},
     {"Energy", "/energy", "J", "elastic + bending + gravitational"},
     {"Design error (rms)", "/design/rms_error", "%", "of the target's diameter"},
+    {"Design verdict", "/design/verdict", "text", "against the goal and a flat sheet"},
     {"Curvature map correlation", "/curvature_map/correlation", "", "target against measured"},
     {"Stable forms found", "/explore/distinct_forms", "", "distinct forms of simulation.explore"},
     {"Solver", "/solver", "text", ""},

@@ -342,6 +342,16 @@ TEST_F(Cli, DesignWritesTheStencilTheFormAndTheErrorsAndRunReproducesIt) {
   EXPECT_GT(d["rms_error"].get<double>(), 0.0);
   EXPECT_GE(d["max_error"].get<double>(), d["rms_error"].get<double>());
   EXPECT_EQ(d["iterations"].size(), 2u);
+  // The verdict, in the report and in words on the terminal.
+  EXPECT_NE(o.text.find("verdict: " + d["verdict_note"].get<std::string>()), std::string::npos)
+      << o.text;
+  const std::string grade = d["verdict"];
+  EXPECT_TRUE(grade == "meets_goal" || grade == "closer_than_flat" ||
+              grade == "no_closer_than_flat")
+      << grade;
+  if (d["rms_error"].get<double>() > 0.9 * d["flat_error"].get<double>()) {
+    EXPECT_EQ(grade, "no_closer_than_flat");
+  }
   // The stencil's scene, run as any scene, gives the same form.
   const Output run =
       membra_cli("run " + (out / "scene.json").string() + " -q --out " + (dir / "again").string());

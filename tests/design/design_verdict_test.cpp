@@ -1,0 +1,66 @@
+// The design's verdict against the goal and a flat sheet (docs/inverse_design.md, "The verdict").
+#include "membra/design/design_verdict.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "membra/design/design_result.hpp"
+
+namespace membra {
+namespace {
+
+// A design whose stencil settled with the errors given (% of the diameter).
+DesignResult design_with(double rms, double flat, int pieces = 40) {
+  DesignResult r;
+  r.method = "pattern_search";
+  r.rms_error = rms;
+  r.flat_error = flat;
+  r.stencil.pieces = pieces;
+  r.run.solve.converged = true;
+  return r;
+}
+
+TEST(DesignVerdict, MeetsTheGoalOnlyWithinTwoPercentAndHalfAFlatSheet) {
+  EXPECT_EQ(design_verdict(design_with(1.5, 4.0)).grade, "meets_goal");
+  EXPECT_EQ(design_verdict(design_with(2.0, 4.0)).grade, "meets_goal");  // both bounds inclusive
+  // Within 2 % but more than half a flat sheet's 2.5 %: closer than flat, not the goal.
+  EXPECT_EQ(design_verdict(design_with(1.5, 2.5)).grade, "closer_than_flat");
+  // Half a flat sheet's but over 2 %.
+  EXPECT_EQ(design_verdict(design_with(2.4, 6.0)).grade, "closer_than_flat");
+}
+
+TEST(DesignVerdict, AStencilBarelyBelowAFlatSheetIsNoDesign) {
+  // The pattern search's saddle at 33^2: a bare sheet, 4.17 % against a flat sheet's 4.29 %.
+  const DesignVerdict v = design_verdict(design_with(4.17, 4.29, 0));
+  EXPECT_EQ(v.grade, "no_closer_than_flat");
+  EXPECT_NE(v.sentence.find("no resin"), std::string::npos) << v.sentence;
+  EXPECT_NE(v.sentence.find("adjoint"), std::string::npos) << v.sentence;        // what to try
+  EXPECT_EQ(design_verdict(design_with(3.86, 4.29)).grade, "closer_than_flat");  // 0.9 of flat
+  EXPECT_EQ(design_verdict(design_with(3.87, 4.29)).grade, "no_closer_than_flat");
+}
+
+TEST(DesignVerdict, AFormWithoutEquilibriumMeetsNothing) {
+  DesignResult r = design_with(1.0, 4.0);
+  r.run.solve.converged = false;
+  const DesignVerdict v = design_verdict(r);
+  EXPECT_EQ(v.grade, "no_closer_than_flat");
+  EXPECT_NE(v.sentence.find("no equilibrium"), std::string::npos) << v.sentence;
+  r = design_with(std::numeric_limits<double>::quiet_NaN(), 4.0);
+  EXPECT_EQ(design_verdict(r).grade, "no_closer_than_flat");
+}
+
+TEST(DesignVerdict, AnAdjointDesignNamesItsDensityDesignsError) {
+  DesignResult r = design_with(6.33, 4.29);
+  r.method = "adjoint";
+  r.density_rms_error = 0.22;
+  const DesignVerdict v = design_verdict(r);
+  EXPECT_EQ(v.grade, "no_closer_than_flat");
+  EXPECT_NE(v.sentence.find("density design (density.png) releases within 0.22 %"),
+            std::string::npos)
+      << v.sentence;
+  EXPECT_EQ(v.sentence.find("try"), std::string::npos) << v.sentence;
+}
+
+}  // namespace
+}  // namespace membra
