@@ -22,7 +22,16 @@ DesignResult design_with(double rms, double flat, int pieces = 40) {
 }
 
 TEST(DesignVerdict, MeetsTheGoalOnlyWithinTwoPercentAndHalfAFlatSheet) {
-  EXPECT_EQ(design_verdict(design_with(1.5, 4.0)).grade, "meets_goal");
+  DesignResult fine = design_with(1.5, 4.0);
+  fine.spec.resolution = 33;
+  EXPECT_EQ(design_verdict(fine).grade, "meets_goal");
+  EXPECT_EQ(design_verdict(fine).sentence.find("coarse"), std::string::npos);
+  DesignResult coarse = fine;  // the goal's numbers, but on a coarse sheet: said so
+  coarse.spec.resolution = 17;
+  EXPECT_EQ(design_verdict(coarse).grade, "meets_goal");
+  EXPECT_NE(design_verdict(coarse).sentence.find("on a 17 x 17 sheet (check it on 33 x 33"),
+            std::string::npos)
+      << design_verdict(coarse).sentence;
   EXPECT_EQ(design_verdict(design_with(2.0, 4.0)).grade, "meets_goal");  // both bounds inclusive
   // Within 2 % but more than half a flat sheet's 2.5 %: closer than flat, not the goal.
   EXPECT_EQ(design_verdict(design_with(1.5, 2.5)).grade, "closer_than_flat");
