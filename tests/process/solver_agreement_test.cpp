@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
@@ -15,11 +16,13 @@
 namespace membra {
 namespace {
 
-RunResult run_example(const std::string& name, int n, const std::string& solver) {
+RunResult run_example(const std::string& name, int n, const std::string& solver,
+                      const std::string& tolerance = "") {
   const std::string res = std::to_string(n);
-  return run_scene(
-      load_scene(std::string(MEMBRA_SOURCE_DIR) + "/examples/" + name,
-                 {"sheet.resolution=[" + res + "," + res + "]", "simulation.solver=" + solver}));
+  std::vector<std::string> set = {"sheet.resolution=[" + res + "," + res + "]",
+                                  "simulation.solver=" + solver};
+  if (!tolerance.empty()) set.push_back("simulation.tolerance=" + tolerance);
+  return run_scene(load_scene(std::string(MEMBRA_SOURCE_DIR) + "/examples/" + name, set));
 }
 
 double relative(double a, double b) {
@@ -56,6 +59,27 @@ TEST(SolverAgreement, NewtonAndStaticReleaseTheSmallSaddleIntoOneForm) {
   EXPECT_LT(relative(a.curvature.total, b.curvature.total), 0.05);
   EXPECT_LT(a.curvature.total, 0.0);  // a saddle overall
   EXPECT_EQ(a.form_global, b.form_global);
+  EXPECT_LT(relative(a.elastic_energy + a.bending_energy, b.elastic_energy + b.bending_energy),
+            0.005);
+}
+
+// A saddle by the measures, the global form's included: the paper's shrink-fabric
+// experiment (exp5_shrink: the rim shrinks, the centre does not) at 11², where the global form is
+// a saddle of its own (no positive part) and not a small total against its parts. Measured with
+// the tolerance 1e-8 that FIRE needs to stop within the 2 % (at 1e-6 it stops 2.2 % lower):
+// 54.58 / 54.49 mm, global K -0.975 / -0.975 rad, energies equal to 4 digits.
+TEST(SolverAgreement, NewtonAndStaticShrinkTheSmallSaddleIntoOneForm) {
+  const RunResult a = run_example("exp5_shrink.json", 11, "newton", "1e-8");
+  const RunResult b = run_example("exp5_shrink.json", 11, "static", "1e-8");
+  ASSERT_TRUE(a.solve.converged && b.solve.converged);
+  ASSERT_TRUE(a.stability.stable && b.stability.stable);
+  std::printf("shrink saddle: height %.2f / %.2f mm, global K %.3f / %.3f rad\n",
+              1e3 * a.shape.height, 1e3 * b.shape.height, a.curvature_global.total,
+              b.curvature_global.total);
+  EXPECT_LT(relative(a.shape.height, b.shape.height), 0.02);
+  EXPECT_LT(relative(a.curvature_global.total, b.curvature_global.total), 0.05);
+  EXPECT_EQ(a.form_global, "anticlastic");
+  EXPECT_EQ(b.form_global, "anticlastic");
   EXPECT_LT(relative(a.elastic_energy + a.bending_energy, b.elastic_energy + b.bending_energy),
             0.005);
 }
