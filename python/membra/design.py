@@ -9,8 +9,9 @@ from . import _membra
 
 class DesignResult:
     """The best stencil found: rms_error and max_error (% of the target's diameter),
-    flat_error (what a flat sheet scores), verdict (meets_goal, closer_than_flat or
-    no_closer_than_flat, as report.json's design.verdict), reachable and message, the best form's positions
+    flat_error (what a flat sheet scores), verdict and verdict_note (meets_goal,
+    closer_than_flat or no_closer_than_flat and the same in words, as report.json's
+    design.verdict and design.verdict_note), reachable and message, the best form's positions
     (n, 3, mm) and triangles, scene (the scene.json dict that reproduces the form through
     membra.run), report (as the design's report.json), write(dir)."""
 
@@ -26,7 +27,9 @@ class DesignResult:
     triangles = property(lambda self: self._native.triangles)
     scene = property(lambda self: self._native.scene)
     report = property(lambda self: self._native.report)
-    verdict = property(lambda self: self.report["design"]["verdict"])
+    verdict = property(lambda self: self._design_report["verdict"])
+    verdict_note = property(lambda self: self._design_report["verdict_note"])
+    _design_report = property(lambda self: self.report["design"])
 
     def write(self, dir):
         """Writes what `membra design target FILE --out DIR` writes, all or nothing."""

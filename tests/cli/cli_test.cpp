@@ -335,6 +335,7 @@ TEST_F(Cli, DesignWritesTheStencilTheFormAndTheErrorsAndRunReproducesIt) {
   const std::string page((std::istreambuf_iterator<char>(page_in)), {});
   EXPECT_NE(page.find("<h1>Design: d</h1>"), std::string::npos);
   EXPECT_NE(page.find("Design error (rms)"), std::string::npos);
+  EXPECT_NE(page.find("Design verdict"), std::string::npos);
   EXPECT_NE(page.find("<img src=\"comparison.png\""), std::string::npos);
   json report;
   std::ifstream(out / "report.json") >> report;
@@ -345,7 +346,7 @@ TEST_F(Cli, DesignWritesTheStencilTheFormAndTheErrorsAndRunReproducesIt) {
   // The verdict, in the report and in words on the terminal.
   EXPECT_NE(o.text.find("verdict: " + d["verdict_note"].get<std::string>()), std::string::npos)
       << o.text;
-  const std::string grade = d["verdict"];
+  const auto grade = d["verdict"].get<std::string>();
   EXPECT_TRUE(grade == "meets_goal" || grade == "closer_than_flat" ||
               grade == "no_closer_than_flat")
       << grade;

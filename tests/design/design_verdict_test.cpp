@@ -49,14 +49,43 @@ TEST(DesignVerdict, AStencilBarelyBelowAFlatSheetIsNoDesign) {
   EXPECT_EQ(design_verdict(design_with(3.87, 4.29)).grade, "no_closer_than_flat");
 }
 
-TEST(DesignVerdict, AFormWithoutEquilibriumMeetsNothing) {
+TEST(DesignVerdict, AFormThatDidNotSettleMeetsNothingAndSaysWhy) {
   DesignResult r = design_with(1.0, 4.0);
   r.run.solve.converged = false;
+  DesignVerdict v = design_verdict(r);
+  EXPECT_EQ(v.grade, "no_closer_than_flat");
+  EXPECT_NE(v.sentence.find("ended unconverged, so its form is no prediction"), std::string::npos)
+      << v.sentence;
+  r = design_with(1.0, 4.0);  // converged, but the stability check found a saddle point
+  r.run.stability.checked = true;
+  r.run.stability.stable = false;
+  v = design_verdict(r);
+  EXPECT_EQ(v.grade, "no_closer_than_flat");
+  EXPECT_NE(v.sentence.find("at a saddle point"), std::string::npos) << v.sentence;
+  r = design_with(1.0, 4.0);
+  r.run.out_of_time = true;
+  EXPECT_NE(design_verdict(r).sentence.find("ran out of its time"), std::string::npos);
+  r = design_with(std::numeric_limits<double>::quiet_NaN(), 4.0);
+  v = design_verdict(r);
+  EXPECT_EQ(v.grade, "no_closer_than_flat");
+  EXPECT_NE(v.sentence.find("no measurable form"), std::string::npos) << v.sentence;
+  EXPECT_EQ(v.sentence.find("nan"), std::string::npos) << v.sentence;
+}
+
+TEST(DesignVerdict, AnUnreachableTargetIsSaidToBeOutOfReachWithoutAMethodToTry) {
+  DesignResult r = design_with(8.0, 4.0);
+  r.reachable = false;
   const DesignVerdict v = design_verdict(r);
   EXPECT_EQ(v.grade, "no_closer_than_flat");
-  EXPECT_NE(v.sentence.find("no equilibrium"), std::string::npos) << v.sentence;
-  r = design_with(std::numeric_limits<double>::quiet_NaN(), 4.0);
-  EXPECT_EQ(design_verdict(r).grade, "no_closer_than_flat");
+  EXPECT_NE(v.sentence.find("out of reach"), std::string::npos) << v.sentence;
+  EXPECT_EQ(v.sentence.find("try"), std::string::npos) << v.sentence;
+}
+
+TEST(DesignVerdict, NamesABareStencilWhateverItsGrade) {
+  // A bare sheet can score clearly below a flat one (a shrunk, gently buckled sheet).
+  const DesignVerdict v = design_verdict(design_with(3.0, 4.29, 0));
+  EXPECT_EQ(v.grade, "closer_than_flat");
+  EXPECT_NE(v.sentence.find("no resin"), std::string::npos) << v.sentence;
 }
 
 TEST(DesignVerdict, AnAdjointDesignNamesItsDensityDesignsError) {
@@ -65,10 +94,13 @@ TEST(DesignVerdict, AnAdjointDesignNamesItsDensityDesignsError) {
   r.density_rms_error = 0.22;
   const DesignVerdict v = design_verdict(r);
   EXPECT_EQ(v.grade, "no_closer_than_flat");
-  EXPECT_NE(v.sentence.find("density design (density.png) releases within 0.22 %"),
+  EXPECT_NE(v.sentence.find("density design (density.png) releases to within 0.22 % of the target"),
             std::string::npos)
       << v.sentence;
   EXPECT_EQ(v.sentence.find("try"), std::string::npos) << v.sentence;
+  r.density_rms_error = 7.0;  // a density design no closer than its stencil is not held up
+  EXPECT_EQ(design_verdict(r).sentence.find("density design"), std::string::npos)
+      << design_verdict(r).sentence;
 }
 
 }  // namespace

@@ -26,6 +26,7 @@ def test_design_matches_the_cli(root, cli, cli_env, tmp_path):
     assert d.rms_error == cli_report["design"]["rms_error"]
     assert d.verdict == cli_report["design"]["verdict"] in (
         "meets_goal", "closer_than_flat", "no_closer_than_flat")
+    assert d.verdict_note == cli_report["design"]["verdict_note"] != ""
     assert (tmp_path / "py" / "final.obj").read_bytes() == (tmp_path / "cli" / "final.obj").read_bytes()
     # The designed scene reproduces the form through membra.run.
     again = membra.run(membra.Scene(d.scene, base_dir=tmp_path))
