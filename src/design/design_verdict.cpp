@@ -20,15 +20,14 @@ constexpr double kClearlyCloser = 0.9;
 // forms (the pattern search's cap: 1.8 % at 17^2, 4.9 % at 33^2).
 constexpr int kGoalResolution = 33;
 
-// Why a stencil's form is no prediction, or "" when it is one (settled, with a finite error).
+// Why a stencil's form is no prediction, or "" when it is one: settled (run_result.hpp's one
+// definition of an end state worth keeping) with a finite error. Only the words are decided here.
 std::string unsettled_reason(const DesignResult& r) {
   const RunResult& run = r.run;
+  if (settled(run)) return std::isfinite(r.rms_error) ? "" : "has no measurable form";
   if (run.out_of_time) return "ran out of its time";
   if (!run.solve.converged || run.solve.diverged) return "ended unconverged";
-  if (run.solve.saddle || (run.stability.checked && !run.stability.stable))
-    return "ended at a saddle point, not a minimum";
-  if (!std::isfinite(r.rms_error)) return "has no measurable form";
-  return "";
+  return "ended at a saddle point, not a minimum";
 }
 
 // The grade and its first clause: the errors against the goal and a flat sheet.

@@ -5,19 +5,11 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <string>
 
-#include "membra/io/scene.hpp"
-#include "membra/process/run.hpp"
+#include "process/example_run.hpp"
 
 namespace membra {
 namespace {
-
-RunResult shrink_saddle(int n) {
-  const std::string res = std::to_string(n);
-  return run_scene(load_scene(std::string(MEMBRA_SOURCE_DIR) + "/examples/exp5_shrink.json",
-                              {"sheet.resolution=[" + res + "," + res + "]"}));
-}
 
 // Halving the spacing twice: the energy's change falls at least 4x (second order; measured 6.5x:
 // 18.05, 19.54, 19.77 µJ, and 19.80 at 64² and 128²), the raw total Gaussian curvature's at
@@ -27,7 +19,7 @@ TEST(MeshConvergence, TheShrinkSaddleConvergesWhenItsSpacingHalves) {
   std::array<double, 3> energy{}, k{};
   const std::array<int, 3> sizes = {9, 17, 33};
   for (size_t i = 0; i < sizes.size(); ++i) {
-    const RunResult r = shrink_saddle(sizes[i]);
+    const RunResult r = run_example("exp5_shrink.json", sizes[i]);
     ASSERT_TRUE(r.solve.converged && r.stability.stable) << sizes[i];
     EXPECT_EQ(r.form_global, "anticlastic") << sizes[i];
     energy[i] = r.elastic_energy + r.bending_energy;

@@ -8,22 +8,11 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <vector>
 
-#include "membra/io/scene.hpp"
-#include "membra/process/run.hpp"
+#include "process/example_run.hpp"
 
 namespace membra {
 namespace {
-
-RunResult run_example(const std::string& name, int n, const std::string& solver,
-                      const std::string& tolerance = "") {
-  const std::string res = std::to_string(n);
-  std::vector<std::string> set = {"sheet.resolution=[" + res + "," + res + "]",
-                                  "simulation.solver=" + solver};
-  if (!tolerance.empty()) set.push_back("simulation.tolerance=" + tolerance);
-  return run_scene(load_scene(std::string(MEMBRA_SOURCE_DIR) + "/examples/" + name, set));
-}
 
 double relative(double a, double b) {
   return std::abs(a - b) / std::max(std::abs(a), std::abs(b));
