@@ -64,14 +64,16 @@ void filter_bending(Membrane& m, const std::vector<bool>& keep) {
 void filter_hinges(Membrane& m, const std::vector<bool>& keep) {
   Hinges& h = m.sheet.model.hinges;
   Hinges out;
-  std::vector<double> full;
+  std::vector<double> full, coverage;
   for (int e = 0; e < h.size(); ++e) {
     if (!keep[e]) continue;
     out.add(h.v[e], h.moment[e]);
     full.push_back(m.hinge_full_moment[e]);
+    coverage.push_back(m.hinge_coverage[e]);
   }
   h = std::move(out);
   m.hinge_full_moment = std::move(full);
+  m.hinge_coverage = std::move(coverage);
 }
 
 using SpringKey = std::tuple<int, int, SpringFamily>;
@@ -185,6 +187,7 @@ Membrane rebuild_without(const Membrane& m, const std::vector<bool>& keep_node,
     if (new_of_old[p] >= 0) n.frame.push_back(new_of_old[p]);
   n.stretch = m.stretch;
   n.resin_side = m.resin_side;
+  n.impregnated = m.impregnated;
   n.releasing = m.releasing;
   n.release_level = m.release_level;
   return n;
@@ -276,6 +279,7 @@ void carry_hinges(const Membrane& m, const std::vector<int>& new_of_old, Membran
     if (!alive) continue;
     n.sheet.model.hinges.add(v, old.hinges.moment[e]);
     n.hinge_full_moment.push_back(m.hinge_full_moment[e]);
+    n.hinge_coverage.push_back(m.hinge_coverage[e]);
   }
 }
 

@@ -84,7 +84,13 @@ void update_spring(Membrane& m, int s) {
   sp.rest_length[s] = (1.0 - f) * latex_rest + f * rest_in;
 }
 
-int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side, bool bilayer) {
+int impregnate(Membrane& m, const PatternPtr& pattern_ptr, const Material& resin, int side,
+               bool bilayer) {
+  const Pattern& pattern = *pattern_ptr;
+  // Fractions of the union with earlier patterns, so that two patterns meeting edge to edge
+  // leave no weaker seam (the springs and elements they share are whole resin).
+  m.impregnated.push_back(pattern_ptr);
+  const PatternPtr all = m.impregnated.size() == 1 ? pattern_ptr : make_union(m.impregnated);
   Model& model = m.sheet.model;
   const Points& x = m.state.x;
   const LatticeStiffness kr = homogenize(
@@ -94,10 +100,10 @@ int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int s
   Springs& sp = model.springs;
   for (int s = 0; s < sp.size(); ++s) {
     if (sp.family[s] == SpringFamily::added) continue;  // not part of the sheet
-    const double f = fraction_inside(pattern, x.col(sp.a[s]).head<2>(), x.col(sp.b[s]).head<2>());
-    if (f <= 0.0) continue;
+    if (fraction_inside(pattern, x.col(sp.a[s]).head<2>(), x.col(sp.b[s]).head<2>()) <= 0.0)
+      continue;
     ++count;
-    m.resin_fraction[s] = std::max(m.resin_fraction[s], f);
+    m.resin_fraction[s] = fraction_inside(*all, x.col(sp.a[s]).head<2>(), x.col(sp.b[s]).head<2>());
     m.resin_length[s] = (x.col(sp.b[s]) - x.col(sp.a[s])).norm();
     // Same family and the same share of a cell as the latex spring (half on the boundary).
     const LatticeStiffness& kl = m.sheet.stiffness;
@@ -113,11 +119,12 @@ int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int s
   const double hx_now = g.hx() * m.stretch.x(), hy_now = g.hy() * m.stretch.y();
   for (int e = 0; e < b.size(); ++e) {
     const auto& v = b.v[e];
-    const double f =
-        0.5 * (fraction_inside(pattern, x.col(v[0]).head<2>(), x.col(v[1]).head<2>(), 8) +
-               fraction_inside(pattern, x.col(v[1]).head<2>(), x.col(v[2]).head<2>(), 8));
-    if (f <= 0.0) continue;
-    m.bending_fraction[e] = std::max(m.bending_fraction[e], f);
+    const auto share = [&](const Pattern& p) {
+      return 0.5 * (fraction_inside(p, x.col(v[0]).head<2>(), x.col(v[1]).head<2>(), 8) +
+                    fraction_inside(p, x.col(v[1]).head<2>(), x.col(v[2]).head<2>(), 8));
+    };
+    if (share(pattern) <= 0.0) continue;
+    m.bending_fraction[e] = share(*all);
     // The resin plate forms in the stretched sheet, whose cells are hx' x hy': its elements
     // take the plate weights of those cells.
     const Vec3 span = model.reference.col(v[2]) - model.reference.col(v[0]);

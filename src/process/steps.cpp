@@ -50,8 +50,7 @@ Path apply_stretch(Membrane& m, const StretchStep& step, StepEffects&) {
 
 Path apply_impregnate(Membrane& m, const ImpregnateStep& step, const std::string& pointer,
                       StepEffects& out) {
-  out.report.resin_springs =
-      impregnate(m, *step.pattern, step.resin, step.resin_side, step.bilayer);
+  out.report.resin_springs = impregnate(m, step.pattern, step.resin, step.resin_side, step.bilayer);
   if (out.report.resin_springs == 0)
     throw InputError(pointer + "/pattern",
                      "the pattern covers no spring of the sheet (is it between grid nodes, or "

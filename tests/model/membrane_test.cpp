@@ -94,7 +94,7 @@ TEST(Membrane, ImpregnatedSpringFollowsTheCompositeRule) {
   // Resin over the left half of the frame (x < 0.0375 m, frame coordinates).
   const auto left = make_polygon({{-1, -1}, {0.0375, -1}, {0.0375, 1}, {-1, 1}});
   const Material resin = epoxy();
-  EXPECT_GT(impregnate(m, *left, resin, +1), 0);
+  EXPECT_GT(impregnate(m, left, resin, +1), 0);
   const Springs& s = m.sheet.model.springs;
   const LatticeStiffness kr = homogenize(resin);
   for (int i = 0; i < s.size(); ++i) {

@@ -24,7 +24,7 @@ namespace {
 Membrane biaxial_release(const NodeMask& keep = {}) {
   Membrane m = make_membrane(build_sheet({0.03, 0.03, 13, 13}, SheetOptions{}, keep));
   stretch_frame(m, 1.3, 1.2);
-  impregnate(m, *make_ellipse({0.0195, 0.018}, 0.008, 0.006, 0.0), epoxy(), +1, false);
+  impregnate(m, make_ellipse({0.0195, 0.018}, 0.008, 0.006, 0.0), epoxy(), +1, false);
   perturb(m, 1e-4, 1);
   begin_release(m);
   set_release_level(m, 0.0);
@@ -94,7 +94,7 @@ class NewtonGauge : public ::testing::TestWithParam<double> {};
 TEST_P(NewtonGauge, ReleasedStripCurlsToTimoshenkoInAnyOrientation) {
   Membrane m = make_membrane(build_sheet({0.1, 0.01, 41, 5}, SheetOptions{}));
   stretch_frame(m, 1.5, 1.0);
-  impregnate(m, *make_polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}), epoxy(), +1, true);
+  impregnate(m, make_polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}), epoxy(), +1, true);
   begin_release(m);
   const double turn = GetParam() * std::acos(-1.0) / 180.0;
   m.state.x = Eigen::AngleAxisd(turn, Vec3::UnitZ()).toRotationMatrix() * m.state.x;

@@ -15,11 +15,13 @@ namespace membra {
 // tensor to the curvature tensor.
 double bilayer_curvature_per_strain(const Material& base, const Material& layer);
 
-// Adds (or, where they exist, replaces) hinges inside `pattern` whose moments make the released
-// composite curl with the resin on the `side` face (+1 top, -1 bottom). The misfit is the
-// latex's current stretch: eps = I - V^-1, V the in-plane stretch of the hinge's two triangles
-// from the paper to the frame. The moments act in proportion to the release (none before it).
-// Returns the number of hinges with resin.
+// Adds hinges inside `pattern` whose moments make the released composite curl with the resin on
+// the `side` face (+1 top, -1 bottom). The misfit is the latex's current stretch: eps = I - V^-1,
+// V the in-plane stretch of the hinge's two triangles from the paper to the frame. A hinge the
+// pattern covers by a share f takes f of the spontaneous curvature at the stiffness of coat and
+// bare latex in series (so a coat's edge does not crease); a hinge an earlier coat covers in part
+// takes the rest from this one, up to the whole. The moments act in proportion to the release
+// (none before it). Returns the number of hinges with resin.
 int add_bilayer_hinges(Membrane& m, const Pattern& pattern, const Material& resin, int side);
 
 // Sets the hinges' moments for the membrane's release level (full moment times the share of

@@ -28,6 +28,11 @@ struct Membrane {
   std::vector<double> bending_fraction;  // share inside resin
   // Per hinge (sheet.model.hinges): the bilayer moment once the release is complete, J/rad.
   std::vector<double> hinge_full_moment;
+  std::vector<double> hinge_coverage;  // the share of the hinge coated so far, at most 1
+
+  // The patterns impregnated so far (frame coordinates): a spring or element that two adjacent
+  // patterns share is as much resin as their union makes it.
+  std::vector<PatternPtr> impregnated;
 
   std::vector<int> frame;      // particles the frame holds (empty once released)
   Vec2 stretch{1.0, 1.0};      // frame stretch ratios applied so far
@@ -56,7 +61,9 @@ int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges = {});
 // current length. Returns the number of springs that received resin. `side` is +1 (top) or -1.
 // With `bilayer`, the resin also sits on that face only and the composite curls on release
 // (bilayer.hpp); without it, the resin soaks the whole thickness and only shortens in plane.
-int impregnate(Membrane& m, const Pattern& pattern, const Material& resin, int side,
+// The membrane keeps the pattern: a later pattern that meets it edge to edge makes the springs
+// and elements they share whole resin.
+int impregnate(Membrane& m, const PatternPtr& pattern, const Material& resin, int side,
                bool bilayer = false);
 
 // release (start): the frame lets go. Latex rest lengths are set to the current lengths
