@@ -6,6 +6,7 @@
 #include <string>
 
 #include "membra/design/design_result.hpp"
+#include "membra/measure/curvature.hpp"
 
 namespace membra {
 namespace {
@@ -56,6 +57,20 @@ void grade(const DesignResult& r, DesignVerdict& v, std::ostream& s) {
   }
 }
 
+// A target that bends far more than its Gaussian curvature says (a cylinder, a wave): integrated
+// |K| below a fifth of integrated H^2 over the interior (a sphere: 1, a cylinder: 0). The
+// in-plane shrink a density makes bends a sheet only through K; a coat on one face bends it
+// directly.
+bool mostly_bent(const TargetSurface& t) {
+  if (t.triangles.empty()) return false;
+  const GaussianCurvature k = gaussian_curvature(t.x, t.triangles);
+  const std::vector<double> h = mean_curvature(t.x, t.triangles);
+  double h2 = 0.0;
+  for (size_t i = 0; i < h.size(); ++i)
+    if (k.interior[i]) h2 += h[i] * h[i] * k.area[i];
+  return h2 > 0.0 && k.positive - k.negative < 0.2 * h2;
+}
+
 }  // namespace
 
 DesignVerdict design_verdict(const DesignResult& r) {
@@ -70,7 +85,12 @@ DesignVerdict design_verdict(const DesignResult& r) {
              !(std::isfinite(r.rms_error) && r.density_rms_error >= r.rms_error)) {
     s << "; the density design (density.png) releases to within " << r.density_rms_error
       << " % of the target, and the stencil of squares does not keep that form";
-  } else if (v.grade != "meets_goal" && r.method != "adjoint") {
+  } else if (v.grade != "meets_goal" && !r.spec.bilayer && mostly_bent(r.target)) {
+    s << "; the target bends with little Gaussian curvature (like a cylinder or a wave), which a "
+         "shrink in the plane does not make and a coat on one face does: try \"resin\": "
+         "{\"bilayer\": true} with the frame stretched across its ridges (and \"resin_side\": "
+         "\"convex\" where it bends both ways)";
+  } else if (v.grade != "meets_goal" && r.method != "adjoint" && !r.spec.bilayer) {
     s << "; try \"method\": \"adjoint\", which designs a density per cell";
   }
   v.sentence = s.str();

@@ -27,10 +27,15 @@ class Search {
   int evaluations() const { return n_; }
   const DensityParameters& best_parameters() const { return best_d_; }
 
-  // Simulates the stencil of density `d`; true when it is the best so far.
+  // Simulates the stencil of density `d`; true when it is the best so far. A density whose
+  // stencil was simulated already (a mean clamped at 0 or 1, steps too small to move a piece)
+  // is not simulated again: it cannot be better.
   bool try_density(const DensityParameters& d) {
     const Stopwatch t;
-    Evaluation e = evaluate(d);
+    Stencil stencil = design_stencil(spec_, r_.target, [&](const Vec2& p) { return d(p, frame_); });
+    if (std::find(tried_.begin(), tried_.end(), stencil.squares) != tried_.end()) return false;
+    tried_.push_back(stencil.squares);
+    Evaluation e = simulate_stencil(spec_, r_.target, std::move(stencil));
     return record(d, std::move(e), t.seconds());
   }
 
@@ -38,7 +43,6 @@ class Search {
   void finish();
 
  private:
-  Evaluation evaluate(const DensityParameters& d) const;
   bool record(const DensityParameters& d, Evaluation&& e, double seconds);
 
   const DesignSpec& spec_;
@@ -50,11 +54,8 @@ class Search {
   Evaluation best_;
   bool best_converged_ = false;
   int n_ = 0;
+  std::vector<std::vector<StencilSquare>> tried_;  // the stencils simulated, by their pieces
 };
-
-Evaluation Search::evaluate(const DensityParameters& d) const {
-  return try_stencil(spec_, r_.target, [&](const Vec2& p) { return d(p, frame_); });
-}
 
 bool Search::record(const DensityParameters& d, Evaluation&& e, double seconds) {
   DesignIteration it = trial_iteration(e, n_++, seconds);

@@ -1,12 +1,52 @@
 #include "membra/design/stencil_trial.hpp"
 
+#include <algorithm>
+
 #include "membra/core/input_error.hpp"
+#include "membra/design/resin_face.hpp"
 
 namespace membra {
 
+namespace {
+
+// The pieces laid on `face`, as a stencil of their own (an empty one when there are none).
+Stencil on_face(const Stencil& stencil, int face) {
+  std::vector<StencilSquare> squares;
+  for (const StencilSquare& q : stencil.squares)
+    if (q.face == face) squares.push_back(q);
+  return stencil_of(squares, stencil.outline_area);
+}
+
+// Pieces on both faces: the impregnate step at index 1 takes the top's, a copy after it the
+// bottom's, each a bilayer on its own face.
+void split_faces(Scene& scene, const Stencil& stencil) {
+  const Stencil top = on_face(stencil, +1), bottom = on_face(stencil, -1);
+  auto& resin = std::get<ImpregnateStep>(scene.protocol[1].step);
+  ImpregnateStep under = resin;
+  under.pattern = bottom.pattern;
+  under.pattern_spec = bottom.spec;
+  under.resin_side = -1;
+  resin.pattern = top.pattern;
+  resin.pattern_spec = top.spec;
+  resin.resin_side = +1;
+  if (!top.pattern) {
+    resin = under;
+  } else if (bottom.pattern) {
+    scene.protocol.insert(scene.protocol.begin() + 2, ProtocolStep{"", under});
+  }
+  for (size_t i = 0; i < scene.protocol.size(); ++i)
+    scene.protocol[i].pointer = "/protocol/" + std::to_string(i);
+}
+
+}  // namespace
+
 Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil) {
   Scene scene = spec.scene;
-  if (stencil.pattern) {
+  const bool two_faces = std::any_of(stencil.squares.begin(), stencil.squares.end(),
+                                     [](const StencilSquare& q) { return q.face < 0; });
+  if (stencil.pattern && two_faces) {
+    split_faces(scene, stencil);
+  } else if (stencil.pattern) {
     auto& resin = std::get<ImpregnateStep>(scene.protocol[1].step);
     resin.pattern = stencil.pattern;
     resin.pattern_spec = stencil.spec;
@@ -20,12 +60,24 @@ Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil) {
 
 StencilTrial try_stencil(const DesignSpec& spec, const TargetSurface& target,
                          const std::function<double(const Vec2&)>& density) {
+  return simulate_stencil(spec, target, design_stencil(spec, target, density));
+}
+
+Stencil design_stencil(const DesignSpec& spec, const TargetSurface& target,
+                       const std::function<double(const Vec2&)>& density) {
   const Box2 frame{Vec2::Zero(), Vec2(spec.frame, spec.frame)};
   const Vec2 centre = 0.5 * frame.max;
   const auto inside = [&](const Vec2& p) {
     return !target.disk || (p - centre).norm() <= 0.5 * spec.frame;
   };
-  return simulate_stencil(spec, target, layout_stencil(density, frame, spec.layout, inside));
+  Stencil stencil = layout_stencil(density, frame, spec.layout, inside);
+  if (spec.resin_side == "convex") lay_on_convex_faces(stencil, target, frame);
+  return stencil;
+}
+
+void lay_on_convex_faces(Stencil& stencil, const TargetSurface& target, const Box2& frame) {
+  for (StencilSquare& q : stencil.squares)
+    q.face = convex_face(target, frame, q.centre, 0.5 * q.cell.minCoeff());
 }
 
 StencilTrial simulate_stencil(const DesignSpec& spec, const TargetSurface& target,

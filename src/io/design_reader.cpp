@@ -98,7 +98,7 @@ json base_scene(const DesignSpec& spec, const json& materials) {
   p.push_back(
       {{"step", "impregnate"},
        {"material", spec.resin},
-       {"resin_side", spec.resin_side},
+       {"resin_side", spec.resin_side == "convex" ? "top" : spec.resin_side},
        {"bilayer", spec.bilayer},
        {"pattern", {{"polygon", {{"points", {{90, 90}, {110, 90}, {110, 110}, {90, 110}}}}}}}});
   p.push_back({{"step", "release"}, {"increments", spec.increments}});
@@ -126,8 +126,12 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
   const JsonObject o =
       top.object("resin", {"material", "min_feature", "cell", "resin_side", "bilayer"});
   s.resin = o.string("material", s.resin);
-  s.resin_side = o.string("resin_side", "top", {"top", "bottom"});
+  s.resin_side = o.string("resin_side", "top", {"top", "bottom", "convex"});
   s.bilayer = o.boolean("bilayer", false);
+  if (s.resin_side == "convex" && !s.bilayer)
+    throw InputError(o.pointer("resin_side"),
+                     "\"convex\" lays each piece on the face the target bulges towards, which "
+                     "only a coat on one face makes curl: set \"bilayer\": true");
   s.layout.min_feature = o.number("min_feature", 4.0, Bounds::positive()) * units::mm;
   s.layout.cell = o.number("cell", 20.0, Bounds::positive()) * units::mm;
   if (s.layout.cell < 2.0 * s.layout.min_feature)

@@ -58,11 +58,16 @@ void stage_run_files(const Scene& scene, const RunResult& r, const PictureOption
     });
   }
   // The stencil at true scale (outlines traced every 0.25 mm).
-  if (const PatternPtr pattern = scene_pattern(scene)) {
+  // Coats on the bottom face go on a layer of their own.
+  const PatternPtr top = scene_pattern(scene, false), bottom = scene_pattern(scene, true);
+  if (top || bottom) {
     const Box2 frame = scene_frame(scene);
-    const auto outlines = trace_outlines(*pattern, frame, 0.25e-3);
-    out.add("pattern.svg", [&](std::ostream& os) { write_svg(os, outlines, frame); });
-    out.add("pattern.dxf", [&](std::ostream& os) { write_dxf(os, outlines, frame); });
+    const auto trace = [&](const PatternPtr& p) {
+      return p ? trace_outlines(*p, frame, 0.25e-3) : std::vector<Polygon2>{};
+    };
+    const auto outlines = trace(top), underside = trace(bottom);
+    out.add("pattern.svg", [&](std::ostream& os) { write_svg(os, outlines, frame, underside); });
+    out.add("pattern.dxf", [&](std::ostream& os) { write_dxf(os, outlines, frame, underside); });
   }
 }
 

@@ -10,6 +10,16 @@ PatternPtr scene_pattern(const Scene& scene) {
   return parts.size() == 1 ? parts[0] : make_union(parts);
 }
 
+PatternPtr scene_pattern(const Scene& scene, bool underside) {
+  std::vector<PatternPtr> parts;
+  for (const auto& step : scene.protocol)
+    if (const auto* i = step.as<ImpregnateStep>();
+        i && (i->bilayer && i->resin_side < 0) == underside)
+      parts.push_back(i->pattern);
+  if (parts.empty()) return nullptr;
+  return parts.size() == 1 ? parts[0] : make_union(parts);
+}
+
 Box2 scene_frame(const Scene& scene) {
   Vec2 stretch(1.0, 1.0);
   for (const auto& step : scene.protocol)

@@ -198,7 +198,8 @@ Image read_pixels(int width, int height) {
   return img;
 }
 
-Image draw_pattern(const Pattern& pattern, const Box2& frame, double pixels_per_mm) {
+Image draw_pattern(const Pattern* pattern, const Box2& frame, double pixels_per_mm,
+                   const Pattern* underside) {
   const Vec2 size = (frame.max - frame.min) * 1e3 * pixels_per_mm;
   Image img{std::max(16, static_cast<int>(std::lround(size.x()))),
             std::max(16, static_cast<int>(std::lround(size.y()))),
@@ -211,8 +212,10 @@ Image draw_pattern(const Pattern& pattern, const Box2& frame, double pixels_per_
       std::uint8_t* px = &img.rgb[(static_cast<size_t>(y) * img.width + x) * 3];
       if (x == 0 || y == 0 || x == img.width - 1 || y == img.height - 1) {
         px[0] = 220, px[1] = 0, px[2] = 0;  // the frame
-      } else if (pattern.contains(p)) {
+      } else if (pattern && pattern->contains(p)) {
         px[0] = px[1] = px[2] = 0;
+      } else if (underside && underside->contains(p)) {
+        px[0] = 32, px[1] = 96, px[2] = 192;  // #2060c0, pattern.svg's resin_bottom
       }
     }
   return img;

@@ -126,8 +126,9 @@ std::string stage_run_pictures(const Scene& scene, const RunResult& r, const Pic
   const auto& x = r.prepared.membrane.state.x;
   const RunColors c = run_colors(r, opts);
   const std::vector<Rgb> k_colors = colorize(c.curvature, c.k_lo, c.k_hi);
-  if (const PatternPtr pattern = scene_pattern(scene))
-    add_png(out, "pattern.png", draw_pattern(*pattern, scene_frame(scene), 4.0));
+  const PatternPtr top = scene_pattern(scene, false), bottom = scene_pattern(scene, true);
+  if (top || bottom)
+    add_png(out, "pattern.png", draw_pattern(top.get(), scene_frame(scene), 4.0, bottom.get()));
   std::string render_note;
   try {
     const OutputSpec& o = scene.output;

@@ -49,6 +49,30 @@ TEST(DesignVerdict, AStencilBarelyBelowAFlatSheetIsNoDesign) {
   EXPECT_EQ(design_verdict(design_with(3.87, 4.29)).grade, "no_closer_than_flat");
 }
 
+// A target that bends with little Gaussian curvature (a cylinder) is pointed at a coat on one
+// face rather than at the adjoint's densities; a cap, whose curvature is Gaussian, is not; nor is
+// a design that already has the coat (the adjoint cannot place one).
+TEST(DesignVerdict, ABentTargetIsPointedAtACoatOnOneFace) {
+  DesignResult cylinder = design_with(3.0, 4.0);
+  TargetSpec spec;
+  spec.kind = "cylinder";
+  spec.height = 0.02;
+  cylinder.target = make_target(spec);
+  DesignVerdict v = design_verdict(cylinder);
+  EXPECT_NE(v.sentence.find("\"bilayer\": true"), std::string::npos) << v.sentence;
+  EXPECT_EQ(v.sentence.find("adjoint"), std::string::npos) << v.sentence;
+  DesignResult cap = design_with(3.0, 4.0);
+  spec = TargetSpec{};  // a cap 150 mm across, 22.5 mm high
+  cap.target = make_target(spec);
+  v = design_verdict(cap);
+  EXPECT_EQ(v.sentence.find("bilayer"), std::string::npos) << v.sentence;
+  EXPECT_NE(v.sentence.find("adjoint"), std::string::npos) << v.sentence;
+  cylinder.spec.bilayer = true;
+  v = design_verdict(cylinder);
+  EXPECT_EQ(v.sentence.find("bilayer"), std::string::npos) << v.sentence;
+  EXPECT_EQ(v.sentence.find("adjoint"), std::string::npos) << v.sentence;
+}
+
 TEST(DesignVerdict, AFormThatDidNotSettleMeetsNothingAndSaysWhy) {
   DesignResult r = design_with(1.0, 4.0);
   r.run.solve.converged = false;

@@ -54,7 +54,7 @@ void expect_scene_reproduces_form(const DesignResult& d) {
 class DesignKinds : public ::testing::TestWithParam<std::pair<json, json>> {};
 
 TEST_P(DesignKinds, TheErrorFallsOverTheIterations) {
-  json design = small_design(GetParam().first);
+  json design = small_design(GetParam().first, 12);
   design["resin"].update(GetParam().second);
   const DesignResult d = run_design(parse_design(design));
   ASSERT_GE(d.history.size(), 2u);
@@ -70,14 +70,15 @@ TEST_P(DesignKinds, TheErrorFallsOverTheIterations) {
   EXPECT_GT(d.flat_error, 0.0);
 }
 
-// The cap on this grid needs the coat on one face: without it the start (4.2 %) was the best of
-// 12 stencils; with it the error fell from 13.8 % to 4.5 % within 6 (3.2 % after 12).
+// 12 stencils each. (The cap had the coat on one face here while a coat's edge creased, which
+// made its start 13.8 % and gave the search room; with the coat's edges mended, a coat adds
+// little on this grid, and the cap's search improves on its start without one: 5.00 -> 4.90 %.)
 INSTANTIATE_TEST_SUITE_P(
     Targets, DesignKinds,
-    ::testing::Values(
-        std::pair{json{{"cap", {{"diameter", 160}, {"height", 24}}}}, json{{"bilayer", true}}},
-        std::pair{json{{"saddle", {{"size", 150}, {"height", 15}}}}, json::object()},
-        std::pair{json{{"cylinder", {{"size", 150}, {"height", 20}}}}, json::object()}),
+    ::testing::Values(std::pair{json{{"cap", {{"diameter", 160}, {"height", 24}}}}, json::object()},
+                      std::pair{json{{"saddle", {{"size", 150}, {"height", 15}}}}, json::object()},
+                      std::pair{json{{"cylinder", {{"size", 150}, {"height", 20}}}},
+                                json::object()}),
     [](const auto& param_info) { return param_info.param.first.begin().key(); });
 
 // The adjoint method on the three targets, 11 x 11 sheet, 25 mm density cells (8 x 8) — the cap
@@ -196,6 +197,56 @@ TEST(InverseDesign, TheStencilsSceneReproducesTheReportedForm) {
   expect_scene_reproduces_form(d);
 }
 
+// A coat on one face under a stretch across the target's ridges (155 mm frame, latex stretched
+// along x only), on an 11 x 11 sheet.
+json coated_design(const json& target, double lambda, const char* side) {
+  json design = small_design(target, 12);
+  design["frame"] = {{"size", 155}, {"lambda", {lambda, 1.0}}};
+  design["resin"] = {{"min_feature", 4}, {"cell", 20}, {"bilayer", true}, {"resin_side", side}};
+  return design;
+}
+
+// A cylinder is the curl of a coat on one face: the whole sheet coated under a stretch of 1.7
+// across the axis rises to the target's radius, within the goal (measured 0.79 % against a flat
+// sheet's 4.0 %). Every density the search tries lays out that same full coat, and the search
+// does not simulate a stencil it has simulated already.
+TEST(InverseDesign, ACoatOnOneFaceMakesACylinder) {
+  const DesignResult d = run_design(
+      parse_design(coated_design({{"cylinder", {{"size", 150}, {"height", 20}}}}, 1.7, "top")));
+  EXPECT_LT(d.rms_error, 2.0);
+  EXPECT_LT(d.rms_error, 0.5 * d.flat_error);
+  EXPECT_DOUBLE_EQ(d.stencil.resin_share, 1.0);
+  EXPECT_LT(d.history.size(), 4u);
+}
+
+// "resin_side": "convex" on an S-shaped wave, z = 5 sin(pi x / 75) mm: the pieces under its crest
+// (x > 0) go on top, those under its trough underneath, one impregnate step per face, and the
+// form comes within 1 % of the target (measured 0.66 %; a flat sheet 1.53 %), where the same coat
+// all on top rolls the sheet one way (4.06 %). The stencil's scene reproduces the form.
+TEST(InverseDesign, ConvexFacesFollowTheTargetsCurvature) {
+  const json wave = {{"height_field", {{"size", 150}, {"z", "5*sin(pi*x/75)"}}}};
+  const DesignResult convex = run_design(parse_design(coated_design(wave, 1.8, "convex")));
+  const DesignResult top = run_design(parse_design(coated_design(wave, 1.8, "top")));
+  const double middle = 0.5 * 0.155;
+  int bottom = 0;
+  for (const StencilSquare& q : convex.stencil.squares) {
+    EXPECT_EQ(q.face, q.centre.x() > middle ? +1 : -1) << q.centre.transpose();
+    bottom += q.face < 0;
+  }
+  EXPECT_GT(bottom, 0);
+  std::vector<int> sides;
+  for (const ProtocolStep& step : convex.scene.protocol)
+    if (const auto* i = step.as<ImpregnateStep>()) {
+      EXPECT_TRUE(i->bilayer);
+      sides.push_back(i->resin_side);
+    }
+  EXPECT_EQ(sides, (std::vector<int>{+1, -1}));
+  EXPECT_LT(convex.rms_error, 1.0);
+  EXPECT_LT(convex.rms_error, 0.5 * convex.flat_error);
+  EXPECT_GT(top.rms_error, 2.0 * convex.rms_error);
+  expect_scene_reproduces_form(convex);
+}
+
 TEST(InverseDesign, AnUnreachableTargetSaysWhyAndGivesItsBestAttempt) {
   // A hemisphere 190 mm across has more area than the 200 mm frame's disk.
   const DesignResult d =
@@ -203,8 +254,9 @@ TEST(InverseDesign, AnUnreachableTargetSaysWhyAndGivesItsBestAttempt) {
   EXPECT_FALSE(d.reachable);
   EXPECT_NE(d.message.find("more than the stretched frame"), std::string::npos) << d.message;
   EXPECT_FALSE(d.scene.protocol.empty());
-  EXPECT_EQ(d.history.size(), 2u);
-  EXPECT_EQ(d.start.mean, 1.0);  // as much resin as there can be
+  // Every start lays out the same full stencil (as much resin as there can be), simulated once.
+  EXPECT_EQ(d.history.size(), 1u);
+  EXPECT_EQ(d.start.mean, 1.0);
 }
 
 TEST(InverseDesign, BadDesignFilesNameTheField) {
@@ -229,6 +281,12 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   j["frame"]["lambda"] = {0.5, 1.5};
   EXPECT_NE(error_of(j).find("/frame/lambda"), std::string::npos);
   j["frame"]["lambda"] = {1.5, 1.5};
+  j["resin"]["resin_side"] = "convex";  // needs a coat on one face
+  EXPECT_NE(error_of(j).find("/resin/resin_side"), std::string::npos);
+  j["resin"]["bilayer"] = true;
+  EXPECT_EQ(parse_design(j).resin_side, "convex");
+  j["resin"].erase("resin_side");
+  j["resin"].erase("bilayer");
   j["design"]["method"] = "gradient";
   EXPECT_NE(error_of(j).find("/design/method"), std::string::npos);
   j["design"]["method"] = "adjoint";

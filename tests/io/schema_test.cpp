@@ -80,7 +80,7 @@ TEST(Schema, EveryExampleSceneAndDesignIsValid) {
     }
   }
   EXPECT_GE(scenes, 1);
-  EXPECT_EQ(designs, 5);
+  EXPECT_EQ(designs, 6);
 }
 
 }  // namespace

@@ -80,6 +80,24 @@ TEST(Stencil, TracedOutlinesEncloseThePatternsArea) {
   EXPECT_NE(d.find("$INSUNITS\n70\n4"), std::string::npos);  // millimetres
 }
 
+// A stencil for both faces: the underside's pieces get a path and a layer of their own.
+TEST(Stencil, TheUndersidesPiecesGetTheirOwnPathAndLayer) {
+  const Box2 frame{Vec2::Zero(), Vec2(0.2, 0.1)};
+  const auto left = trace_outlines(
+      *make_polygon({{0.01, 0.01}, {0.09, 0.01}, {0.09, 0.09}, {0.01, 0.09}}), frame, 0.25e-3);
+  const auto right = trace_outlines(
+      *make_polygon({{0.11, 0.01}, {0.19, 0.01}, {0.19, 0.09}, {0.11, 0.09}}), frame, 0.25e-3);
+  std::ostringstream svg, dxf, plain;
+  write_svg(svg, left, frame, right);
+  write_svg(plain, left, frame);
+  EXPECT_NE(svg.str().find("id=\"resin_bottom\""), std::string::npos);
+  EXPECT_EQ(plain.str().find("resin_bottom"), std::string::npos);
+  EXPECT_NEAR(svg_area(svg.str()), 80.0 * 80.0, 1.0);  // the first path: the top's, mm^2
+  write_dxf(dxf, left, frame, right);
+  EXPECT_NE(dxf.str().find("\nRESIN_BOTTOM\n"), std::string::npos);
+  EXPECT_NE(dxf.str().find("\nRESIN\n"), std::string::npos);
+}
+
 TEST(Stencil, PatternsAreClippedToTheFrame) {
   // A strip running off the right edge: only the part on the frame is resin.
   const auto strip = make_strip({{0.1, 0.1}, {0.5, 0.1}}, 0.01);

@@ -22,6 +22,8 @@ struct StencilSquare {
   Vec2 centre = Vec2::Zero();  // m, frame coordinates
   Vec2 cell = Vec2::Zero();    // m, the cell's sides
   double scale = 1.0;          // the piece's sides over the cell's (1: a filled cell)
+  int face = +1;               // the face it is laid on (+1 top, -1 bottom; resin_face.hpp)
+  bool operator==(const StencilSquare&) const = default;
 };
 
 struct Stencil {

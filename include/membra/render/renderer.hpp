@@ -64,8 +64,10 @@ class Renderer {
 Image read_pixels(int width, int height);
 
 // The pattern seen from above on its frame (m): resin black on white with a red frame line,
-// `pixels_per_mm` pixels per mm (CPU, no OpenGL needed).
-Image draw_pattern(const Pattern& pattern, const Box2& frame, double pixels_per_mm);
+// `pixels_per_mm` pixels per mm (CPU, no OpenGL needed). Either pattern may be null; the
+// `underside`'s (coats on the bottom face) is blue, as in pattern.svg.
+Image draw_pattern(const Pattern* pattern, const Box2& frame, double pixels_per_mm,
+                   const Pattern* underside = nullptr);
 
 // Copies `src` into `dst` with its top-left corner at (x, y), clipped to dst.
 void blit(Image& dst, const Image& src, int x, int y);

@@ -1,0 +1,25 @@
+#include "membra/design/resin_face.hpp"
+
+#include <cmath>
+
+#include "membra/design/target_correspondence.hpp"
+
+namespace membra {
+
+int convex_face(const TargetSurface& target, const Box2& frame, const Vec2& p, double step) {
+  const Vec2 lo = target.x.topRows<2>().rowwise().minCoeff();
+  const Vec2 hi = target.x.topRows<2>().rowwise().maxCoeff();
+  // Frame -> footprint, axis by axis, centre on centre.
+  const Vec2 scale = (hi - lo).cwiseQuotient(frame.max - frame.min);
+  const Vec2 q = 0.5 * (lo + hi) + (p - 0.5 * (frame.min + frame.max)).cwiseProduct(scale);
+  const Vec2 h = step * scale;
+  const auto z = [&](double dx, double dy) { return target_height(target, q + Vec2(dx, dy)); };
+  const double z0 = z(0.0, 0.0);
+  const double laplacian = (z(h.x(), 0.0) + z(-h.x(), 0.0) - 2.0 * z0) / (h.x() * h.x()) +
+                           (z(0.0, h.y()) + z(0.0, -h.y()) - 2.0 * z0) / (h.y() * h.y());
+  // A dome (laplacian < 0) is convex seen from above: its coat goes on top.
+  const double extent = (hi - lo).maxCoeff();
+  return laplacian > 1e-9 / extent ? -1 : +1;
+}
+
+}  // namespace membra
