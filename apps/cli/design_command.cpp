@@ -1,5 +1,6 @@
 #include "design_command.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -11,6 +12,18 @@
 #include "membra/render/design_outputs.hpp"
 
 namespace membra::cli {
+namespace {
+
+// "stencil: N pieces on top, M underneath" when the stencil has pieces on both faces.
+std::string faces_line(const DesignResult& r) {
+  const auto under = std::count_if(r.stencil.squares.begin(), r.stencil.squares.end(),
+                                   [](const StencilSquare& q) { return q.face < 0; });
+  if (under == 0) return "";
+  return "stencil: " + std::to_string(r.stencil.pieces - under) + " pieces on top, " +
+         std::to_string(under) + " underneath (blue in pattern.svg)\n";
+}
+
+}  // namespace
 
 int cmd_design(const DesignArgs& args) {
   DesignSpec spec = load_design(args.file);
@@ -51,8 +64,8 @@ int cmd_design(const DesignArgs& args) {
   if (!args.quiet)
     std::cout << "design: rms error " << r.rms_error << " %, max " << r.max_error
               << " % of the target's diameter after " << r.history.size() << " simulations ("
-              << r.seconds << " s); a flat sheet scores " << r.flat_error
-              << " %\nverdict: " << design_verdict(r).sentence << "\nresults in "
+              << r.seconds << " s); a flat sheet scores " << r.flat_error << " %\n"
+              << faces_line(r) << "verdict: " << design_verdict(r).sentence << "\nresults in "
               << out.dir().string()
               << "/ (scene.json, pattern.svg, pattern.dxf, final.obj, final.ply, "
                  "comparison.png, report.json, report.html)\n";

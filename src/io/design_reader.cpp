@@ -1,9 +1,11 @@
 #include "membra/io/design_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
@@ -68,6 +70,23 @@ void parse_target(const json& j, const std::string& ptr, const std::filesystem::
   }
 }
 
+// `n` particles along the shorter side and as many square cells as fit along the other; where
+// they do not fit within the 1 % the scene reader allows (an elongated natural sheet on a coarse
+// grid: 86 x 155 mm at 9 gives cells of 10.76 and 11.07 mm), the first finer grid whose cells do.
+std::pair<int, int> square_grid(double wx, double wy, int n) {
+  const double ratio = std::max(wx, wy) / std::min(wx, wy);
+  int best = n;
+  for (int k = n; k <= n + 20; ++k) {
+    const double cells = std::max(1.0, std::round((k - 1) * ratio));
+    if (std::abs(cells / ((k - 1) * ratio) - 1.0) <= 0.01) {
+      best = k;
+      break;
+    }
+  }
+  const int along = static_cast<int>(std::max(1.0, std::round((best - 1) * ratio))) + 1;
+  return wx <= wy ? std::pair{best, along} : std::pair{along, best};
+}
+
 // The scene a design's stencils are simulated in, with one square of resin (the search puts its
 // stencils in its place): read once when the design is, so that its materials and resolution are
 // checked before any simulation.
@@ -75,10 +94,7 @@ json base_scene(const DesignSpec& spec, const json& materials) {
   const bool disk = spec.target.kind == "cap";
   const double wx = spec.frame / spec.lambda.x() / units::mm,
                wy = spec.frame / spec.lambda.y() / units::mm;
-  // `resolution` particles along the shorter side, square cells (as many as fit) along the other.
-  const int n = spec.resolution;
-  const int nx = wx <= wy ? n : static_cast<int>(std::lround((n - 1) * wx / wy)) + 1;
-  const int ny = wy <= wx ? n : static_cast<int>(std::lround((n - 1) * wy / wx)) + 1;
+  const auto [nx, ny] = square_grid(wx, wy, spec.resolution);
   json scene = {
       {"name", spec.name},
       {"description", "Stencil designed by `membra design` for a " + spec.target.kind + " target"},

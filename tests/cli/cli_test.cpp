@@ -378,6 +378,33 @@ TEST_F(Cli, DesignOfAnUnreachableTargetExplainsAndKeepsTheBestAttempt) {
   EXPECT_NE(bad.text.find("/target"), std::string::npos) << bad.text;
 }
 
+// A stencil for both faces: the printed line counts the pieces per face, pattern.svg and
+// pattern.dxf draw the underside's apart, report.json counts them, scene.json has a step per face.
+TEST_F(Cli, DesignWithConvexFacesWritesEachFacesPieces) {
+  const fs::path design = write("w.json", R"json({"name": "w",
+    "target": {"height_field": {"size": 150, "z": "5*sin(pi*x/75)"}},
+    "frame": {"size": 155, "lambda": [1.8, 1]}, "sheet": {"resolution": 9},
+    "resin": {"bilayer": true, "resin_side": "convex"},
+    "design": {"evaluations": 1, "solver": "newton"}})json");
+  const fs::path out = dir / "wave";
+  const Output o = membra_cli("design target " + design.string() + " --out " + out.string());
+  ASSERT_EQ(o.code, 0) << o.text;
+  EXPECT_NE(o.text.find("stencil: 32 pieces on top, 32 underneath"), std::string::npos) << o.text;
+  const auto read = [&](const char* file) {
+    std::ifstream in(out / file);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  };
+  EXPECT_NE(read("pattern.svg").find("id=\"resin_bottom\""), std::string::npos);
+  EXPECT_NE(read("pattern.dxf").find("RESIN_BOTTOM"), std::string::npos);
+  const json report = json::parse(read("report.json"));
+  EXPECT_EQ(report["design"]["stencil"]["pieces_bottom"], 32);
+  EXPECT_EQ(report["design"]["stencil"]["resin_side"], "convex");
+  const json scene = json::parse(read("scene.json"));
+  EXPECT_EQ(scene["protocol"][1]["resin_side"], "top");
+  EXPECT_EQ(scene["protocol"][2]["step"], "impregnate");
+  EXPECT_EQ(scene["protocol"][2]["resin_side"], "bottom");
+}
+
 TEST_F(Cli, NewtonGivesTheSameBytesWhateverTheBlasThreadCount) {
   // The supernodal factorization's BLAS sums depend on OpenBLAS's thread count; membra pins it
   // to one so that a scene's result does not depend on the machine's settings.

@@ -247,6 +247,19 @@ TEST(InverseDesign, ConvexFacesFollowTheTargetsCurvature) {
   expect_scene_reproduces_form(convex);
 }
 
+// An elongated natural sheet (86 x 155 mm) on a coarse grid: 9 particles across would leave
+// cells 3 % longer than wide, which scenes refuse; the design takes the first finer grid whose
+// cells are square (11 across, 19 along), and keeps the requested grid where it fits (17: 30).
+TEST(InverseDesign, AnElongatedSheetGetsSquareCells) {
+  json design = coated_design({{"cylinder", {{"size", 150}, {"height", 20}}}}, 1.8, "top");
+  design["sheet"]["resolution"] = 9;
+  EXPECT_EQ(parse_design(design).scene.grid.nx, 11);
+  EXPECT_EQ(parse_design(design).scene.grid.ny, 19);
+  design["sheet"]["resolution"] = 17;
+  EXPECT_EQ(parse_design(design).scene.grid.nx, 17);
+  EXPECT_EQ(parse_design(design).scene.grid.ny, 30);
+}
+
 TEST(InverseDesign, AnUnreachableTargetSaysWhyAndGivesItsBestAttempt) {
   // A hemisphere 190 mm across has more area than the 200 mm frame's disk.
   const DesignResult d =
