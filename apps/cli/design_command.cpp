@@ -49,8 +49,12 @@ int cmd_design(const DesignArgs& args) {
       std::cerr << line;
       return;
     }
-    char scale[32] = "";
+    char scale[48] = "";
     if (it.scale != 1.0) std::snprintf(scale, sizeof scale, "  densities x%.2f", it.scale);
+    if (spec.search_stretch) {  // the stretch this stencil was simulated at
+      const Vec2 l = Vec2::Ones() + it.parameters.stretch * (spec.lambda - Vec2::Ones());
+      std::snprintf(scale, sizeof scale, "  lambda %.2f x %.2f", l.x(), l.y());
+    }
     std::snprintf(
         line, sizeof line,
         "  %3d  rms %6.2f %%  max %6.2f %%  resin %4.0f %%  %3d pieces  %6.1f s%s%s%s%s\n",

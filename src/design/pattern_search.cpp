@@ -6,6 +6,7 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/stopwatch.hpp"
+#include "membra/design/design_stretch.hpp"
 #include "membra/design/stencil_trial.hpp"
 
 namespace membra {
@@ -33,9 +34,10 @@ class Search {
   bool try_density(const DensityParameters& d) {
     const Stopwatch t;
     Stencil stencil = design_stencil(spec_, r_.target, [&](const Vec2& p) { return d(p, frame_); });
-    if (std::find(tried_.begin(), tried_.end(), stencil.squares) != tried_.end()) return false;
-    tried_.push_back(stencil.squares);
-    Evaluation e = simulate_stencil(spec_, r_.target, std::move(stencil));
+    const Tried key{d.stretch, stencil.squares};
+    if (std::find(tried_.begin(), tried_.end(), key) != tried_.end()) return false;
+    tried_.push_back(key);
+    Evaluation e = simulate_stencil(with_stretch(spec_, d.stretch), r_.target, std::move(stencil));
     return record(d, std::move(e), t.seconds());
   }
 
@@ -54,7 +56,9 @@ class Search {
   Evaluation best_;
   bool best_converged_ = false;
   int n_ = 0;
-  std::vector<std::vector<StencilSquare>> tried_;  // the stencils simulated, by their pieces
+  // The stencils simulated, by their stretch and pieces.
+  using Tried = std::pair<double, std::vector<StencilSquare>>;
+  std::vector<Tried> tried_;
 };
 
 bool Search::record(const DensityParameters& d, Evaluation&& e, double seconds) {
@@ -85,6 +89,7 @@ void Search::finish() {
                   "No simulation reached equilibrium: the form shown is the last state of the "
                   "best one, not a prediction (more iterations, or the static solver).";
   r_.best = best_d_;
+  r_.spec = with_stretch(spec_, best_d_.stretch);  // its scene.json stretches as it was run
   adopt_stencil(std::move(best_), r_);
 }
 
@@ -107,18 +112,22 @@ std::vector<DensityParameters> starts(const DensityParameters& start) {
 
 // Pattern search (Hooke and Jeeves without the pattern move): try each parameter up and down by
 // its step, keep any improvement, halve the steps when none helps.
-void pattern_search(Search& search) {
-  std::array<double, 3> step = {0.15, 0.2, 0.2};
+// `stretch`: the pre-stretch is a fourth parameter, its factor on the misfit bounded so that the
+// most stretched direction stays between 1.05 and 2.5; `misfit` is that direction's lambda - 1.
+void pattern_search(Search& search, bool stretch, double misfit) {
+  std::array<double, 4> step = {0.15, 0.2, 0.2, 0.5};
   constexpr double min_step = 0.02;
+  const int parameters = stretch ? 4 : 3;
   while (!search.out_of_budget() && step[0] >= min_step) {
     bool improved = false;
-    for (int c = 0; c < 3 && !search.out_of_budget(); ++c)
+    for (int c = 0; c < parameters && !search.out_of_budget(); ++c)
       for (double sign : {+1.0, -1.0}) {
         if (search.out_of_budget()) break;
         DensityParameters d = search.best_parameters();
-        double& v = c == 0 ? d.mean : c == 1 ? d.radial : d.anisotropy;
+        double& v = c == 0 ? d.mean : c == 1 ? d.radial : c == 2 ? d.anisotropy : d.stretch;
         v += sign * step[static_cast<size_t>(c)];
         if (c == 0) v = std::clamp(v, 0.0, 1.0);
+        if (c == 3) v = std::clamp(v, 0.05 / misfit, 1.5 / misfit);
         if (search.try_density(d)) {
           improved = true;
           break;
@@ -139,7 +148,7 @@ void design_by_pattern_search(const DesignSpec& spec, DesignResult& r,
     if (search.evaluations() > 0 && search.out_of_budget()) break;
     search.try_density(d);
   }
-  pattern_search(search);
+  pattern_search(search, spec.search_stretch, spec.lambda.maxCoeff() - 1.0);
   search.finish();
 }
 

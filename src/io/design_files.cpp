@@ -19,7 +19,8 @@ nlohmann::json number(double v) {
 }
 
 nlohmann::json params(const DensityParameters& p) {
-  return {{"mean", p.mean}, {"radial", p.radial}, {"anisotropy", p.anisotropy}};
+  return {
+      {"mean", p.mean}, {"radial", p.radial}, {"anisotropy", p.anisotropy}, {"stretch", p.stretch}};
 }
 
 nlohmann::json iteration(const DesignIteration& it) {
@@ -74,6 +75,7 @@ nlohmann::json make_design_report(const DesignResult& d) {
       {"max_error", number(d.max_error)},
       {"error_unit", "% of the target's diameter (square: side), after rigid alignment"},
       {"flat_error", d.flat_error},
+      {"lambda", {d.spec.lambda.x(), d.spec.lambda.y()}},
       {"verdict", verdict.grade},
       {"verdict_note", verdict.sentence},
       {"reachable", d.reachable},

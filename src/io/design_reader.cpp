@@ -9,6 +9,7 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
+#include "membra/geometry/square_grid.hpp"
 #include "membra/io/json_reader.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/scene.hpp"
@@ -68,23 +69,6 @@ void parse_target(const json& j, const std::string& ptr, const std::filesystem::
   } catch (const std::invalid_argument& e) {
     throw InputError(p, e.what());
   }
-}
-
-// `n` particles along the shorter side and as many square cells as fit along the other; where
-// they do not fit within the 1 % the scene reader allows (an elongated natural sheet on a coarse
-// grid: 86 x 155 mm at 9 gives cells of 10.76 and 11.07 mm), the first finer grid whose cells do.
-std::pair<int, int> square_grid(double wx, double wy, int n) {
-  const double ratio = std::max(wx, wy) / std::min(wx, wy);
-  int best = n;
-  for (int k = n; k <= n + 20; ++k) {
-    const double cells = std::max(1.0, std::round((k - 1) * ratio));
-    if (std::abs(cells / ((k - 1) * ratio) - 1.0) <= 0.01) {
-      best = k;
-      break;
-    }
-  }
-  const int along = static_cast<int>(std::max(1.0, std::round((best - 1) * ratio))) + 1;
-  return wx <= wy ? std::pair{best, along} : std::pair{along, best};
 }
 
 // The scene a design's stencils are simulated in, with one square of resin (the search puts its
@@ -160,9 +144,10 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
 // /design: the search's budget and the simulations' solver.
 void read_design_settings(const JsonObject& top, DesignSpec& s) {
   if (!top.has("design")) return;
-  const JsonObject o = top.object(
-      "design", {"method", "evaluations", "budget", "solver", "tolerance", "increments",
-                 "density_cell", "smoothing", "flattening", "stencil_trials", "piece_evaluations"});
+  const JsonObject o =
+      top.object("design", {"method", "evaluations", "budget", "solver", "tolerance", "increments",
+                            "density_cell", "smoothing", "flattening", "stencil_trials",
+                            "piece_evaluations", "search_stretch"});
   s.method = o.string("method", s.method, {"adjoint", "pattern_search"});
   // The adjoint's evaluations are cheap warm starts: it takes more of them by default.
   s.evaluations = static_cast<int>(
@@ -180,6 +165,11 @@ void read_design_settings(const JsonObject& top, DesignSpec& s) {
     throw InputError("/resin/bilayer",
                      "the adjoint method does not place a coat on one face yet: use "
                      "\"method\": \"pattern_search\" for a bilayer");
+  s.search_stretch = o.boolean("search_stretch", false);
+  if (s.method == "adjoint" && s.search_stretch)
+    throw InputError(o.pointer("search_stretch"),
+                     "the adjoint method keeps the pre-stretch: use \"method\": "
+                     "\"pattern_search\" to search it");
   s.budget = o.number("budget", s.budget, Bounds::positive());
   std::vector<std::string_view> equilibrium;
   for (const SolverInfo& info : solver_table())

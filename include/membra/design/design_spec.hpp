@@ -38,9 +38,10 @@ struct DesignSpec {
   // adjoint, stage 3: stencils simulated from flat — the calibrated one, then the wanted
   // densities scaled by 0.85, 1.15, 0.7, 1.3 — the best that settles is the design's.
   int stencil_trials = 5;
-  int piece_evaluations = 20;  // adjoint: stage 3's evaluations on the best trial's piece sizes
-  int evaluations = 24;        // forward simulations (adjoint: forward + adjoint solves) at most
-  double budget = 900.0;       // s of wall time at most
+  int piece_evaluations = 20;   // adjoint: stage 3's evaluations on the best trial's piece sizes
+  int evaluations = 24;         // forward simulations (adjoint: forward + adjoint solves) at most
+  bool search_stretch = false;  // pattern search: the pre-stretch is a fourth parameter
+  double budget = 900.0;        // s of wall time at most
   Solver solver = Solver::newton;
   double tolerance = 1e-6;
   int increments = 10;  // of the release path
