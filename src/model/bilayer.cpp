@@ -66,7 +66,8 @@ double bilayer_curvature_per_strain(const Material& base, const Material& layer)
   return t / (base.thickness + layer.thickness);
 }
 
-int add_bilayer_hinges(Membrane& m, const Pattern& pattern, const Material& resin, int side) {
+int add_bilayer_hinges(Membrane& m, const Pattern& pattern, const Material& resin, int side,
+                       const Pattern* all_coats) {
   const Model& model = m.sheet.model;
   const Points& x = m.state.x;
   const double per_strain = bilayer_curvature_per_strain(m.sheet.material, resin);
@@ -88,11 +89,14 @@ int add_bilayer_hinges(Membrane& m, const Pattern& pattern, const Material& resi
     const int c = left.opposite, dd = right->second.opposite;
     const auto it = existing.find({a, b});
     const size_t old = it != existing.end() ? static_cast<size_t>(it->second) : 0;
-    // Coats on both sides of a hinge (two steps meeting there) add up to its whole; where a
-    // coat lies already, the first one stays.
+    // Coats on both sides of a hinge (two steps meeting there) add up to its whole, overlaps
+    // counted once; where a coat lies already, the first one stays.
     const double covered = it != existing.end() ? m.hinge_coverage[old] : 0.0;
-    const double f = std::min(fraction_inside(pattern, x.col(c).head<2>(), x.col(dd).head<2>(), 8),
-                              1.0 - covered);
+    const Vec2 pc = x.col(c).head<2>(), pd = x.col(dd).head<2>();
+    const double own = fraction_inside(pattern, pc, pd, 8);
+    if (own <= 0.0) continue;
+    const double f =
+        std::min(own, (all_coats ? fraction_inside(*all_coats, pc, pd, 8) : 1.0) - covered);
     if (f <= 1e-12) continue;
     const Triangle& t1 = tris[left.tri];
     const Triangle& t2 = tris[right->second.tri];

@@ -188,6 +188,7 @@ Membrane rebuild_without(const Membrane& m, const std::vector<bool>& keep_node,
   n.stretch = m.stretch;
   n.resin_side = m.resin_side;
   n.impregnated = m.impregnated;
+  n.coats = m.coats;
   n.releasing = m.releasing;
   n.release_level = m.release_level;
   return n;

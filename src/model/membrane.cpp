@@ -34,6 +34,8 @@ int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges) {
   m.state.x.row(1) *= ly;
   m.state.v.setZero();
   m.stretch = m.stretch.cwiseProduct(Vec2(lx, ly));
+  m.impregnated.clear();  // the sheet moves under the earlier patterns
+  m.coats.clear();
   const GridSheet& g = m.sheet.grid;
   Model& model = m.sheet.model;
   // The frame holds the sheet's outer rim: the first and last node of every row (left, right)
@@ -91,6 +93,7 @@ int impregnate(Membrane& m, const PatternPtr& pattern_ptr, const Material& resin
   // leave no weaker seam (the springs and elements they share are whole resin).
   m.impregnated.push_back(pattern_ptr);
   const PatternPtr all = m.impregnated.size() == 1 ? pattern_ptr : make_union(m.impregnated);
+  // (Never less than before: resin cured in an earlier state stays.)
   Model& model = m.sheet.model;
   const Points& x = m.state.x;
   const LatticeStiffness kr = homogenize(
@@ -103,7 +106,9 @@ int impregnate(Membrane& m, const PatternPtr& pattern_ptr, const Material& resin
     if (fraction_inside(pattern, x.col(sp.a[s]).head<2>(), x.col(sp.b[s]).head<2>()) <= 0.0)
       continue;
     ++count;
-    m.resin_fraction[s] = fraction_inside(*all, x.col(sp.a[s]).head<2>(), x.col(sp.b[s]).head<2>());
+    m.resin_fraction[s] =
+        std::max(m.resin_fraction[s],
+                 fraction_inside(*all, x.col(sp.a[s]).head<2>(), x.col(sp.b[s]).head<2>()));
     m.resin_length[s] = (x.col(sp.b[s]) - x.col(sp.a[s])).norm();
     // Same family and the same share of a cell as the latex spring (half on the boundary).
     const LatticeStiffness& kl = m.sheet.stiffness;
@@ -124,7 +129,7 @@ int impregnate(Membrane& m, const PatternPtr& pattern_ptr, const Material& resin
                     fraction_inside(p, x.col(v[1]).head<2>(), x.col(v[2]).head<2>(), 8));
     };
     if (share(pattern) <= 0.0) continue;
-    m.bending_fraction[e] = share(*all);
+    m.bending_fraction[e] = std::max(m.bending_fraction[e], share(*all));
     // The resin plate forms in the stretched sheet, whose cells are hx' x hy': its elements
     // take the plate weights of those cells.
     const Vec3 span = model.reference.col(v[2]) - model.reference.col(v[0]);
@@ -136,7 +141,11 @@ int impregnate(Membrane& m, const PatternPtr& pattern_ptr, const Material& resin
     b.stiffness[e] = 1.0 / ((1.0 - fe) / cl + fe / (cl + m.resin_bending[e]));
   }
   m.resin_side = side >= 0 ? 1 : -1;
-  if (bilayer) add_bilayer_hinges(m, pattern, resin, m.resin_side);
+  if (bilayer) {
+    m.coats.push_back(pattern_ptr);
+    add_bilayer_hinges(m, pattern, resin, m.resin_side,
+                       m.coats.size() == 1 ? pattern_ptr.get() : make_union(m.coats).get());
+  }
   return count;
 }
 
@@ -144,6 +153,8 @@ void begin_release(Membrane& m) {
   Model& model = m.sheet.model;
   for (int p : m.frame) model.unpin(p);
   m.frame.clear();
+  m.impregnated.clear();
+  m.coats.clear();
   const Springs& sp = model.springs;
   for (int s = 0; s < sp.size(); ++s)
     m.frame_length[s] = (m.state.x.col(sp.b[s]) - m.state.x.col(sp.a[s])).norm();

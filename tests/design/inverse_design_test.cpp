@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "membra/core/input_error.hpp"
+#include "membra/design/stencil_trial.hpp"
 #include "membra/io/design_reader.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/scene.hpp"
@@ -217,6 +218,18 @@ TEST(InverseDesign, ACoatOnOneFaceMakesACylinder) {
   EXPECT_LT(d.rms_error, 0.5 * d.flat_error);
   EXPECT_DOUBLE_EQ(d.stencil.resin_share, 1.0);
   EXPECT_LT(d.history.size(), 4u);
+}
+
+// A cap bulges up everywhere, rim included: every piece of a convex stencil goes on top (the
+// Laplacian is taken a step inwards near the rim, where the target's height beyond it is flat).
+TEST(InverseDesign, ConvexFacesOfACapAreAllOnTop) {
+  json design = small_design({{"cap", {{"diameter", 160}, {"height", 24}}}});
+  design["resin"].update({{"bilayer", true}, {"resin_side", "convex"}});
+  const DesignSpec spec = parse_design(design);
+  const TargetSurface target = make_target(spec.target);
+  const Stencil s = design_stencil(spec, target, [](const Vec2&) { return 0.5; });
+  ASSERT_GT(s.pieces, 20);
+  for (const StencilSquare& q : s.squares) EXPECT_EQ(q.face, +1) << q.centre.transpose();
 }
 
 // The pre-stretch searched: from a stretch of 1.3, too little for the cylinder's radius, the

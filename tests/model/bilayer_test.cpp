@@ -220,6 +220,11 @@ TEST(Bilayer, CoatsThatMeetAreSeamless) {
   const Membrane one = released_coated_strip({{{-1, 151, +1}}});
   for (int i : {8, 20, 32}) EXPECT_NEAR(row_curvature(two, i) / row_curvature(one, i), 1.0, 1e-4);
   EXPECT_NEAR(largest_turn(two), largest_turn(one), 1e-6);
+  // Overlapping coats count the overlap once.
+  const Membrane overlapping = released_coated_strip({{{-1, 90, +1}, {60, 151, +1}}});
+  for (int i : {8, 20, 32})
+    EXPECT_NEAR(row_curvature(overlapping, i) / row_curvature(one, i), 1.0, 1e-4);
+  for (double c : overlapping.hinge_coverage) EXPECT_LE(c, 1.0 + 1e-12);
 }
 
 // The scene key reaches the model: "bilayer": true bows the strip towards the resin face,

@@ -88,6 +88,25 @@ TEST(Membrane, ReleaseWithoutResinReturnsToNaturalSizeAndStaysFlat) {
   EXPECT_LT(size.z(), 1e-3 * 0.05);
 }
 
+// Resin cured before a second stretch stays: the later pattern's union is taken only with the
+// patterns applied since the sheet last moved, and a fraction never falls.
+TEST(Membrane, ResinFromBeforeAStretchStays) {
+  Membrane m = small_sheet();
+  stretch_frame(m, 1.5, 1.0);
+  impregnate(m, make_polygon({{-1, -1}, {0.0375, -1}, {0.0375, 1}, {-1, 1}}), epoxy(), +1);
+  const std::vector<double> before = m.resin_fraction;
+  stretch_frame(m, 1.0, 1.2);
+  // A thin band across the resin: the springs it crosses are partly in it, wholly in the first.
+  impregnate(m, make_polygon({{0.01, -1}, {0.012, -1}, {0.012, 1}, {0.01, 1}}), epoxy(), +1);
+  int crossed = 0;
+  for (size_t i = 0; i < before.size(); ++i) {
+    EXPECT_GE(m.resin_fraction[i], before[i]) << i;
+    crossed += before[i] == 1.0 && m.resin_fraction[i] == 1.0;
+  }
+  EXPECT_GT(crossed, 0);
+  EXPECT_EQ(m.impregnated.size(), 1u);
+}
+
 TEST(Membrane, ImpregnatedSpringFollowsTheCompositeRule) {
   Membrane m = small_sheet();
   stretch_frame(m, 1.5, 1.0);

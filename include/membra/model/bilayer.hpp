@@ -22,7 +22,10 @@ double bilayer_curvature_per_strain(const Material& base, const Material& layer)
 // bare latex in series (so a coat's edge does not crease); a hinge an earlier coat covers in part
 // takes the rest from this one, up to the whole. The moments act in proportion to the release
 // (none before it). Returns the number of hinges with resin.
-int add_bilayer_hinges(Membrane& m, const Pattern& pattern, const Material& resin, int side);
+// `all_coats`: the union of the coats since the sheet last moved, this one included (null: this
+// one alone), which decides how much of a hinge an earlier coat leaves to this one.
+int add_bilayer_hinges(Membrane& m, const Pattern& pattern, const Material& resin, int side,
+                       const Pattern* all_coats = nullptr);
 
 // Sets the hinges' moments for the membrane's release level (full moment times the share of
 // the misfit released so far).

@@ -30,9 +30,11 @@ struct Membrane {
   std::vector<double> hinge_full_moment;
   std::vector<double> hinge_coverage;  // the share of the hinge coated so far, at most 1
 
-  // The patterns impregnated so far (frame coordinates): a spring or element that two adjacent
-  // patterns share is as much resin as their union makes it.
-  std::vector<PatternPtr> impregnated;
+  // The patterns impregnated since the sheet last moved (frame coordinates), all and the coats
+  // on one face among them: a spring, element or hinge that two adjacent patterns share is as
+  // much resin as their union makes it. A stretch or the release clears them (the sheet has moved
+  // under the patterns' frame coordinates).
+  std::vector<PatternPtr> impregnated, coats;
 
   std::vector<int> frame;      // particles the frame holds (empty once released)
   Vec2 stretch{1.0, 1.0};      // frame stretch ratios applied so far
