@@ -11,7 +11,9 @@ class DesignResult:
     """The best stencil found: rms_error and max_error (% of the target's diameter),
     flat_error (what a flat sheet scores), verdict and verdict_note (meets_goal,
     closer_than_flat or no_closer_than_flat and the same in words, as report.json's
-    design.verdict and design.verdict_note), reachable and message, the best form's positions
+    design.verdict and design.verdict_note), prestretch (the frame's stretch the stencil was
+    simulated at: the file's, or the one "search_stretch" found), pieces_bottom (the stencil's
+    pieces on the bottom face), reachable and message, the best form's positions
     (n, 3, mm) and triangles, scene (the scene.json dict that reproduces the form through
     membra.run), report (as the design's report.json), write(dir)."""
 
@@ -29,6 +31,8 @@ class DesignResult:
     report = property(lambda self: self._native.report)
     verdict = property(lambda self: self._design_report["verdict"])
     verdict_note = property(lambda self: self._design_report["verdict_note"])
+    prestretch = property(lambda self: tuple(self._design_report["lambda"]))
+    pieces_bottom = property(lambda self: self._design_report["stencil"]["pieces_bottom"])
     _design_report = property(lambda self: self.report["design"])
 
     def write(self, dir):

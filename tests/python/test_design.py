@@ -45,3 +45,21 @@ def test_an_adjoint_design_keeps_its_calibration_for_the_next(root, tmp_path, mo
     assert second.report["design"]["calibration"]["density"] == \
         first.report["design"]["calibration"]["density"]
     assert membra.design(spec, cache=False).report["design"]["calibration"]["cached"] is False
+
+
+def test_coats_on_both_faces_and_a_searched_stretch(root):
+    wave = json.loads((root / "examples" / "inverse_wave.json").read_text())
+    wave["sheet"]["resolution"] = 9
+    d = membra.design(wave)
+    assert d.pieces_bottom == 32 and d.prestretch == (1.8, 1.0)
+    sides = [s["resin_side"] for s in d.scene["protocol"] if s["step"] == "impregnate"]
+    assert sides == ["top", "bottom"]
+    # From a stretch too small for the cylinder's radius, the search raises it.
+    cylinder = json.loads((root / "examples" / "inverse_cylinder.json").read_text())
+    cylinder["sheet"]["resolution"] = 11
+    cylinder["frame"]["lambda"] = [1.3, 1.0]
+    cylinder["design"] = {**cylinder["design"], "evaluations": 12, "search_stretch": True}
+    c = membra.design(cylinder)
+    assert c.prestretch[0] > 1.5 and c.prestretch[1] == 1.0 and c.pieces_bottom == 0
+    stretch = [s["lambda"] for s in c.scene["protocol"] if s["step"] == "stretch"][0]
+    assert tuple(stretch) == c.prestretch
