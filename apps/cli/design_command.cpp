@@ -1,9 +1,9 @@
 #include "design_command.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
+#include "membra/design/design_stretch.hpp"
 #include "membra/design/design_verdict.hpp"
 #include "membra/io/calibration_store.hpp"
 #include "membra/io/design_files.hpp"
@@ -16,8 +16,7 @@ namespace {
 
 // "stencil: N pieces on top, M underneath" when the stencil has pieces on both faces.
 std::string faces_line(const DesignResult& r) {
-  const auto under = std::count_if(r.stencil.squares.begin(), r.stencil.squares.end(),
-                                   [](const StencilSquare& q) { return q.face < 0; });
+  const int under = r.stencil.pieces_bottom();
   if (under == 0) return "";
   return "stencil: " + std::to_string(r.stencil.pieces - under) + " pieces on top, " +
          std::to_string(under) + " underneath (blue in pattern.svg)\n";
@@ -52,7 +51,7 @@ int cmd_design(const DesignArgs& args) {
     char scale[48] = "";
     if (it.scale != 1.0) std::snprintf(scale, sizeof scale, "  densities x%.2f", it.scale);
     if (spec.search_stretch) {  // the stretch this stencil was simulated at
-      const Vec2 l = Vec2::Ones() + it.parameters.stretch * (spec.lambda - Vec2::Ones());
+      const Vec2 l = stretched_lambda(spec.lambda, it.parameters.stretch);
       std::snprintf(scale, sizeof scale, "  lambda %.2f x %.2f", l.x(), l.y());
     }
     std::snprintf(

@@ -6,10 +6,14 @@
 
 namespace membra {
 
+Vec2 stretched_lambda(const Vec2& lambda, double factor) {
+  return Vec2::Ones() + factor * (lambda - Vec2::Ones());
+}
+
 DesignSpec with_stretch(const DesignSpec& spec, double factor) {
   if (factor == 1.0) return spec;
   DesignSpec s = spec;
-  s.lambda = Vec2::Ones() + factor * (spec.lambda - Vec2::Ones());
+  s.lambda = stretched_lambda(spec.lambda, factor);
   GridSpec& g = s.scene.grid;
   g.width = s.frame / s.lambda.x();
   g.height = s.frame / s.lambda.y();

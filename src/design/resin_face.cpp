@@ -1,5 +1,6 @@
 #include "membra/design/resin_face.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "membra/design/target_correspondence.hpp"
@@ -15,8 +16,8 @@ int convex_face(const TargetSurface& target, const Box2& frame, const Vec2& p, d
   // The samples stay on the footprint (beyond it the target's height is its nearest vertex's,
   // flat, which would bend a rim's second difference): near the rim the Laplacian is taken a
   // step inwards.
-  Vec2 q = 0.5 * (lo + hi) + (p - 0.5 * (frame.min + frame.max)).cwiseProduct(scale);
   const Vec2 c = 0.5 * (lo + hi);
+  Vec2 q = c + (p - 0.5 * (frame.min + frame.max)).cwiseProduct(scale);
   if (target.disk) {
     const double room = 0.5 * (hi - lo).minCoeff() - h.maxCoeff();
     if ((q - c).norm() > room) q = c + (q - c) * (std::max(room, 0.0) / (q - c).norm());

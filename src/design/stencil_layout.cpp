@@ -37,6 +37,11 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
   return stencil_of(squares, total);
 }
 
+int Stencil::pieces_bottom() const {
+  return static_cast<int>(std::count_if(squares.begin(), squares.end(),
+                                        [](const StencilSquare& q) { return q.face < 0; }));
+}
+
 Stencil stencil_of(const std::vector<StencilSquare>& squares, double outline_area) {
   std::vector<std::array<Vec2, 4>> corners;
   double resin = 0.0;

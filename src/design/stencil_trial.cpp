@@ -1,7 +1,5 @@
 #include "membra/design/stencil_trial.hpp"
 
-#include <algorithm>
-
 #include "membra/core/input_error.hpp"
 #include "membra/design/resin_face.hpp"
 
@@ -38,13 +36,17 @@ void split_faces(Scene& scene, const Stencil& stencil) {
     scene.protocol[i].pointer = "/protocol/" + std::to_string(i);
 }
 
+// With `"resin_side": "convex"`: each piece on the face the target's curvature asks for.
+void lay_on_convex_faces(Stencil& stencil, const TargetSurface& target, const Box2& frame) {
+  for (StencilSquare& q : stencil.squares)
+    q.face = convex_face(target, frame, q.centre, 0.5 * q.cell.minCoeff());
+}
+
 }  // namespace
 
 Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil) {
   Scene scene = spec.scene;
-  const bool two_faces = std::any_of(stencil.squares.begin(), stencil.squares.end(),
-                                     [](const StencilSquare& q) { return q.face < 0; });
-  if (stencil.pattern && two_faces) {
+  if (stencil.pattern && stencil.pieces_bottom() > 0) {
     split_faces(scene, stencil);
   } else if (stencil.pattern) {
     auto& resin = std::get<ImpregnateStep>(scene.protocol[1].step);
@@ -73,11 +75,6 @@ Stencil design_stencil(const DesignSpec& spec, const TargetSurface& target,
   Stencil stencil = layout_stencil(density, frame, spec.layout, inside);
   if (spec.resin_side == "convex") lay_on_convex_faces(stencil, target, frame);
   return stencil;
-}
-
-void lay_on_convex_faces(Stencil& stencil, const TargetSurface& target, const Box2& frame) {
-  for (StencilSquare& q : stencil.squares)
-    q.face = convex_face(target, frame, q.centre, 0.5 * q.cell.minCoeff());
 }
 
 StencilTrial simulate_stencil(const DesignSpec& spec, const TargetSurface& target,

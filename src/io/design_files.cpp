@@ -1,7 +1,5 @@
 #include "membra/io/design_files.hpp"
 
-#include <algorithm>
-
 #include <cmath>
 
 #include "membra/core/units.hpp"
@@ -86,8 +84,7 @@ nlohmann::json make_design_report(const DesignResult& d) {
         {"area_mm2", d.target.area / (units::mm * units::mm)}}},
       {"stencil",
        {{"pieces", d.stencil.pieces},
-        {"pieces_bottom", std::count_if(d.stencil.squares.begin(), d.stencil.squares.end(),
-                                        [](const StencilSquare& q) { return q.face < 0; })},
+        {"pieces_bottom", d.stencil.pieces_bottom()},
         {"resin_side", d.spec.resin_side},
         {"bilayer", d.spec.bilayer},
         {"resin_share", d.stencil.resin_share},

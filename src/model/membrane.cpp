@@ -92,7 +92,7 @@ int impregnate(Membrane& m, const PatternPtr& pattern_ptr, const Material& resin
   // Fractions of the union with earlier patterns, so that two patterns meeting edge to edge
   // leave no weaker seam (the springs and elements they share are whole resin).
   m.impregnated.push_back(pattern_ptr);
-  const PatternPtr all = m.impregnated.size() == 1 ? pattern_ptr : make_union(m.impregnated);
+  const PatternPtr all = make_union(m.impregnated);
   // (Never less than before: resin cured in an earlier state stays.)
   Model& model = m.sheet.model;
   const Points& x = m.state.x;
@@ -143,8 +143,8 @@ int impregnate(Membrane& m, const PatternPtr& pattern_ptr, const Material& resin
   m.resin_side = side >= 0 ? 1 : -1;
   if (bilayer) {
     m.coats.push_back(pattern_ptr);
-    add_bilayer_hinges(m, pattern, resin, m.resin_side,
-                       m.coats.size() == 1 ? pattern_ptr.get() : make_union(m.coats).get());
+    const PatternPtr coats = make_union(m.coats);
+    add_bilayer_hinges(m, pattern, resin, m.resin_side, coats.get());
   }
   return count;
 }

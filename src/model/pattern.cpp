@@ -254,6 +254,7 @@ PatternPtr make_raster(std::vector<float> grey, int width, int height, Vec2 orig
 }
 
 PatternPtr make_union(std::vector<PatternPtr> parts) {
+  if (parts.size() == 1) return std::move(parts[0]);  // no wrapper to walk through per query
   return std::make_shared<Union>(std::move(parts));
 }
 

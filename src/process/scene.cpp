@@ -1,23 +1,29 @@
 #include "membra/process/scene.hpp"
 
+#include <functional>
+
 namespace membra {
 
-PatternPtr scene_pattern(const Scene& scene) {
+namespace {
+
+// The union of the patterns of the impregnate steps `keep` accepts (nullptr if none).
+PatternPtr union_of_steps(const Scene& scene,
+                          const std::function<bool(const ImpregnateStep&)>& keep) {
   std::vector<PatternPtr> parts;
   for (const auto& step : scene.protocol)
-    if (const auto* i = step.as<ImpregnateStep>()) parts.push_back(i->pattern);
-  if (parts.empty()) return nullptr;
-  return parts.size() == 1 ? parts[0] : make_union(parts);
+    if (const auto* i = step.as<ImpregnateStep>(); i && keep(*i)) parts.push_back(i->pattern);
+  return parts.empty() ? nullptr : make_union(std::move(parts));
+}
+
+}  // namespace
+
+PatternPtr scene_pattern(const Scene& scene) {
+  return union_of_steps(scene, [](const ImpregnateStep&) { return true; });
 }
 
 PatternPtr scene_pattern(const Scene& scene, bool underside) {
-  std::vector<PatternPtr> parts;
-  for (const auto& step : scene.protocol)
-    if (const auto* i = step.as<ImpregnateStep>();
-        i && (i->bilayer && i->resin_side < 0) == underside)
-      parts.push_back(i->pattern);
-  if (parts.empty()) return nullptr;
-  return parts.size() == 1 ? parts[0] : make_union(parts);
+  return union_of_steps(
+      scene, [&](const ImpregnateStep& i) { return (i.bilayer && i.resin_side < 0) == underside; });
 }
 
 Box2 scene_frame(const Scene& scene) {

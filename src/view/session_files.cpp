@@ -55,7 +55,7 @@ void export_session(const ViewerSession& session, const std::filesystem::path& f
     if (PatternPtr p = scene_pattern(saved)) parts.push_back(p);
     if (PatternPtr p = session.resin_pattern()) parts.push_back(p);
     if (parts.empty()) throw InputError(file.string(), "there is no resin to export yet");
-    const PatternPtr all = parts.size() == 1 ? parts[0] : make_union(parts);
+    const PatternPtr all = make_union(parts);
     const Box2 frame = scene_frame(saved);
     const auto outlines = trace_outlines(*all, frame, 0.25e-3);
     if (ext == ".svg")

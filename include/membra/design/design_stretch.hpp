@@ -10,5 +10,7 @@ namespace membra {
 // natural sheet becomes frame / lambda' (on a grid of square cells, design.resolution along its
 // shorter side) and the stretch step takes it to the same frame, so stencils keep their place.
 DesignSpec with_stretch(const DesignSpec& spec, double factor);
+// lambda' = 1 + factor (lambda - 1), along each axis.
+Vec2 stretched_lambda(const Vec2& lambda, double factor);
 
 }  // namespace membra

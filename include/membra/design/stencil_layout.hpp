@@ -34,6 +34,8 @@ struct Stencil {
   // From layout_stencil: its pieces, and the area of the cells inside the outline.
   std::vector<StencilSquare> squares;
   double outline_area = 0.0;  // m^2
+
+  int pieces_bottom() const;  // of the squares, those laid on the bottom face
 };
 
 // `density(p)` at each cell centre p (frame coordinates, m); cells whose centre is not

@@ -32,9 +32,6 @@ StencilTrial try_stencil(const DesignSpec& spec, const TargetSurface& target,
 // on its face.
 Stencil design_stencil(const DesignSpec& spec, const TargetSurface& target,
                        const std::function<double(const Vec2&)>& density);
-// With `"resin_side": "convex"`: each piece on the face the target's curvature asks for
-// (resin_face.hpp).
-void lay_on_convex_faces(Stencil& stencil, const TargetSurface& target, const Box2& frame);
 // The same for a stencil already laid out.
 StencilTrial simulate_stencil(const DesignSpec& spec, const TargetSurface& target, Stencil stencil);
 // The trial as an entry of the design's history (stage "stencil"; not yet marked best).

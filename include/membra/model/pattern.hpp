@@ -58,6 +58,7 @@ PatternPtr make_polygon(std::vector<Vec2> vertices);
 // `threshold` (or at/above it when `invert`). Row 0 is the top of the image.
 PatternPtr make_raster(std::vector<float> grey, int width, int height, Vec2 origin, Vec2 size,
                        double threshold, bool invert);
+// The union of the parts (a single part is returned as it is).
 PatternPtr make_union(std::vector<PatternPtr> parts);
 // The first pattern minus all the others.
 PatternPtr make_difference(std::vector<PatternPtr> parts);
