@@ -48,17 +48,19 @@ int cmd_design(const DesignArgs& args) {
       std::cerr << line;
       return;
     }
-    char scale[48] = "";
+    char scale[48] = "", darts[24] = "";
     if (it.scale != 1.0) std::snprintf(scale, sizeof scale, "  densities x%.2f", it.scale);
+    if (spec.layout.kind == "darts")  // their width over what the target's metric asks
+      std::snprintf(darts, sizeof darts, "  darts x%.2f", it.parameters.darts);
     if (spec.search_stretch) {  // the stretch this stencil was simulated at
       const Vec2 l = stretched_lambda(spec.lambda, it.parameters.stretch);
       std::snprintf(scale, sizeof scale, "  lambda %.2f x %.2f", l.x(), l.y());
     }
     std::snprintf(
         line, sizeof line,
-        "  %3d  rms %6.2f %%  max %6.2f %%  resin %4.0f %%  %3d pieces  %6.1f s%s%s%s%s\n",
-        it.index, it.rms_error, it.max_error, 100.0 * it.resin_share, it.pieces, it.seconds, scale,
-        it.best ? "  best" : "", it.note.empty() ? "" : "  ", it.note.c_str());
+        "  %3d  rms %6.2f %%  max %6.2f %%  resin %4.0f %%  %3d pieces  %6.1f s%s%s%s%s%s\n",
+        it.index, it.rms_error, it.max_error, 100.0 * it.resin_share, it.pieces, it.seconds, darts,
+        scale, it.best ? "  best" : "", it.note.empty() ? "" : "  ", it.note.c_str());
     std::cerr << line;
   });
   const std::string note = stage_design_outputs(r, out);
@@ -68,8 +70,9 @@ int cmd_design(const DesignArgs& args) {
     std::cout << "design: rms error " << r.rms_error << " %, max " << r.max_error
               << " % of the target's diameter after " << r.history.size() << " simulations ("
               << r.seconds << " s); a flat sheet scores " << r.flat_error << " %\n"
-              << faces_line(r) << "verdict: " << design_verdict(r).sentence << "\nresults in "
-              << out.dir().string()
+              << faces_line(r) << "verdict: " << design_verdict(r).sentence << "\n"
+              << (r.reachable && !r.message.empty() ? "note: " + r.message + "\n" : "")
+              << "results in " << out.dir().string()
               << "/ (scene.json, pattern.svg, pattern.dxf, final.obj, final.ply, "
                  "comparison.png, report.json, report.html)\n";
   if (!r.reachable) {

@@ -71,6 +71,14 @@ bool mostly_bent(const TargetSurface& t) {
   return h2 > 0.0 && k.positive - k.negative < 0.2 * h2;
 }
 
+// A dome: nearly all of its Gaussian curvature positive (integrated K+ over 0.9 of |K|), which
+// darts make (dart_layout.hpp).
+bool dome(const TargetSurface& t) {
+  if (t.triangles.empty()) return false;
+  const GaussianCurvature k = gaussian_curvature(t.x, t.triangles);
+  return k.positive > 0.0 && k.positive > 0.9 * (k.positive - k.negative);
+}
+
 }  // namespace
 
 DesignVerdict design_verdict(const DesignResult& r) {
@@ -90,6 +98,12 @@ DesignVerdict design_verdict(const DesignResult& r) {
          "shrink in the plane does not make and a coat on one face does: try \"resin\": "
          "{\"bilayer\": true} with the frame stretched across its ridges (and \"resin_side\": "
          "\"convex\" where it bends both ways)";
+  } else if (v.grade != "meets_goal" && r.spec.layout.kind == "darts") {
+    s << "; darts follow the target's metric alone: try another number of darts, a finer sheet, "
+         "or a frame as wide as the target measured along its surface";
+  } else if (v.grade != "meets_goal" && !r.spec.bilayer && dome(r.target)) {
+    s << "; the target is a dome, which darts make: try \"resin\": {\"layout\": \"darts\"} "
+         "with a frame as wide as the target measured along its surface";
   } else if (v.grade != "meets_goal" && r.method != "adjoint" && !r.spec.bilayer) {
     s << "; try \"method\": \"adjoint\", which designs a density per cell";
   }

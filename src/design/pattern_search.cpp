@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
+#include <tuple>
 #include <vector>
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/stopwatch.hpp"
+#include "membra/core/units.hpp"
+#include "membra/design/dart_layout.hpp"
 #include "membra/design/design_stretch.hpp"
 #include "membra/design/stencil_trial.hpp"
 
@@ -22,7 +27,11 @@ class Search {
       : spec_(spec),
         r_(r),
         progress_(progress),
-        frame_{Vec2::Zero(), Vec2(spec.frame, spec.frame)} {}
+        frame_{Vec2::Zero(), Vec2(spec.frame, spec.frame)} {
+    if (darts()) note_frame_fit();
+  }
+
+  bool darts() const { return spec_.layout.kind == "darts"; }
 
   bool out_of_budget() const { return n_ >= spec_.evaluations || clock_.seconds() >= spec_.budget; }
   int evaluations() const { return n_; }
@@ -33,8 +42,8 @@ class Search {
   // is not simulated again: it cannot be better.
   bool try_density(const DensityParameters& d) {
     const Stopwatch t;
-    Stencil stencil = design_stencil(spec_, r_.target, [&](const Vec2& p) { return d(p, frame_); });
-    const Tried key{d.stretch, stencil.squares};
+    Stencil stencil = make_stencil(d);
+    const Tried key{d.stretch, d.darts, stencil.squares};
     if (std::find(tried_.begin(), tried_.end(), key) != tried_.end()) return false;
     tried_.push_back(key);
     Evaluation e = simulate_stencil(with_stretch(spec_, d.stretch), r_.target, std::move(stencil));
@@ -46,6 +55,8 @@ class Search {
 
  private:
   bool record(const DensityParameters& d, Evaluation&& e, double seconds);
+  Stencil make_stencil(const DensityParameters& d) const;
+  void note_frame_fit();
 
   const DesignSpec& spec_;
   DesignResult& r_;
@@ -56,10 +67,36 @@ class Search {
   Evaluation best_;
   bool best_converged_ = false;
   int n_ = 0;
-  // The stencils simulated, by their stretch and pieces.
-  using Tried = std::pair<double, std::vector<StencilSquare>>;
+  // The stencils simulated, by their stretch, darts' scale and pieces.
+  using Tried = std::tuple<double, double, std::vector<StencilSquare>>;
   std::vector<Tried> tried_;
+  DartProfile profile_;  // darts: the target's deficit
 };
+
+// Darts keep lengths along the spokes: a frame as wide as the target measured along its surface
+// makes the form at the target's size. Another frame makes it larger or smaller, which the
+// alignment counts as error, so the design says which frame fits.
+void Search::note_frame_fit() {
+  profile_ = dart_profile(r_.target);
+  const double fit = 2.0 * profile_.mean_radius;
+  if (std::abs(spec_.frame - fit) <= 0.05 * fit) return;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "Darts keep lengths from the centre: a frame %.0f mm across makes the target at "
+                "its size (this one is %.0f mm).",
+                fit / units::mm, spec_.frame / units::mm);
+  r_.message += std::string(r_.message.empty() ? "" : " ") + text;
+}
+
+Stencil Search::make_stencil(const DensityParameters& d) const {
+  if (!darts())
+    return design_stencil(spec_, r_.target, [&](const Vec2& p) { return d(p, frame_); });
+  // Darts shrink circles whichever way they run: the stretch's geometric mean sets by how much.
+  const Vec2 lambda = with_stretch(spec_, d.stretch).lambda;
+  return layout_darts(
+      profile_, frame_, r_.target.disk,
+      {spec_.layout.darts, d.darts, std::sqrt(lambda.prod()), spec_.layout.min_feature});
+}
 
 bool Search::record(const DensityParameters& d, Evaluation&& e, double seconds) {
   DesignIteration it = trial_iteration(e, n_++, seconds);
@@ -96,7 +133,14 @@ void Search::finish() {
 // Buckled forms have many branches, and the start from mechanics may sit on a flat one (a sheet
 // in tension stays flat): a few plain starts are tried too, and the search goes on from the best
 // of them.
-std::vector<DensityParameters> starts(const DensityParameters& start) {
+std::vector<DensityParameters> starts(const DensityParameters& start, bool darts) {
+  // Darts: as wide as the deficit asks, and half as wide again (measured: the latex between
+  // spokes shrinks less than free latex would, so the best scale is usually above 1).
+  if (darts) {
+    DensityParameters wider = start;
+    wider.darts = 1.5;
+    return {start, wider};
+  }
   std::vector<DensityParameters> out = {start};
   for (double mean : {start.mean, start.mean - 0.25, start.mean + 0.25}) {
     DensityParameters d;
@@ -114,25 +158,35 @@ std::vector<DensityParameters> starts(const DensityParameters& start) {
 // its step, keep any improvement, halve the steps when none helps.
 // `stretch`: the pre-stretch is a fourth parameter, its factor on the misfit bounded so that the
 // most stretched direction stays between 1.05 and 2.5; `misfit` is that direction's lambda - 1.
+// Darts have one parameter of their own, their scale (coordinate 4), besides the stretch.
 void pattern_search(Search& search, bool stretch, double misfit) {
-  std::array<double, 4> step = {0.15, 0.2, 0.2, 0.5};
+  std::array<double, 5> step = {0.15, 0.2, 0.2, 0.5, 0.25};
   constexpr double min_step = 0.02;
-  const int parameters = stretch ? 4 : 3;
-  while (!search.out_of_budget() && step[0] >= min_step) {
+  std::vector<int> coordinates = search.darts() ? std::vector<int>{4} : std::vector<int>{0, 1, 2};
+  if (stretch) coordinates.push_back(3);
+  const size_t first = static_cast<size_t>(coordinates[0]);
+  while (!search.out_of_budget() && step[first] >= min_step) {
     bool improved = false;
-    for (int c = 0; c < parameters && !search.out_of_budget(); ++c)
+    for (int c : coordinates) {
+      if (search.out_of_budget()) break;
       for (double sign : {+1.0, -1.0}) {
         if (search.out_of_budget()) break;
         DensityParameters d = search.best_parameters();
-        double& v = c == 0 ? d.mean : c == 1 ? d.radial : c == 2 ? d.anisotropy : d.stretch;
+        double& v = c == 0   ? d.mean
+                    : c == 1 ? d.radial
+                    : c == 2 ? d.anisotropy
+                    : c == 3 ? d.stretch
+                             : d.darts;
         v += sign * step[static_cast<size_t>(c)];
         if (c == 0) v = std::clamp(v, 0.0, 1.0);
         if (c == 3) v = std::clamp(v, 0.05 / misfit, 1.5 / misfit);
+        if (c == 4) v = std::clamp(v, 0.0, 4.0);
         if (search.try_density(d)) {
           improved = true;
           break;
         }
       }
+    }
     if (!improved)
       for (double& s : step) s *= 0.5;
   }
@@ -144,7 +198,7 @@ void design_by_pattern_search(const DesignSpec& spec, DesignResult& r,
                               const std::function<void(const DesignIteration&)>& progress) {
   r.method = "pattern_search";
   Search search(spec, r, progress);
-  for (const DensityParameters& d : starts(r.start)) {
+  for (const DensityParameters& d : starts(r.start, search.darts())) {
     if (search.evaluations() > 0 && search.out_of_budget()) break;
     search.try_density(d);
   }

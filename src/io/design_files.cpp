@@ -16,12 +16,15 @@ nlohmann::json number(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
 }
 
-nlohmann::json params(const DensityParameters& p) {
-  return {
+// `darts`: the stencil is laid out as darts, whose scale is then the parameter that counts.
+nlohmann::json params(const DensityParameters& p, bool darts) {
+  nlohmann::json j = {
       {"mean", p.mean}, {"radial", p.radial}, {"anisotropy", p.anisotropy}, {"stretch", p.stretch}};
+  if (darts) j["darts"] = p.darts;
+  return j;
 }
 
-nlohmann::json iteration(const DesignIteration& it) {
+nlohmann::json iteration(const DesignIteration& it, bool darts) {
   if (it.adjoint_iterate())  // no stencil simulated from flat: distances to its own points
     return {{"index", it.index},
             {"stage", it.stage},
@@ -41,7 +44,7 @@ nlohmann::json iteration(const DesignIteration& it) {
           {"seconds", it.seconds},
           {"best", it.best},
           {"note", it.note},
-          {"parameters", params(it.parameters)}};
+          {"parameters", params(it.parameters, darts)}};
 }
 
 // The adjoint method's own keys (docs/inverse_design.md).
@@ -65,7 +68,8 @@ void add_adjoint(const DesignResult& d, nlohmann::json& a) {
 nlohmann::json make_design_report(const DesignResult& d) {
   nlohmann::json report = make_report(d.scene, d.run);
   nlohmann::json iterations = nlohmann::json::array();
-  for (const DesignIteration& it : d.history) iterations.push_back(iteration(it));
+  const bool darts = d.spec.layout.kind == "darts";
+  for (const DesignIteration& it : d.history) iterations.push_back(iteration(it, darts));
   const DesignVerdict verdict = design_verdict(d);
   report["design"] = {
       {"method", d.method},
@@ -88,10 +92,12 @@ nlohmann::json make_design_report(const DesignResult& d) {
         {"resin_side", d.spec.resin_side},
         {"bilayer", d.spec.bilayer},
         {"resin_share", d.stencil.resin_share},
+        {"layout", d.spec.layout.kind},
+        {"darts", darts ? d.spec.layout.darts : 0},
         {"cell_mm", d.spec.layout.cell / units::mm},
         {"min_feature_mm", d.spec.layout.min_feature / units::mm}}},
-      {"start", params(d.start)},
-      {"best", params(d.best)},
+      {"start", params(d.start, darts)},
+      {"best", params(d.best, darts)},
       {"evaluations", d.history.size()},
       {"seconds", d.seconds},
       {"iterations", iterations}};

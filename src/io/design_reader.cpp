@@ -123,8 +123,8 @@ void read_frame(const JsonObject& top, DesignSpec& s) {
 // /resin: the material, its face, the stencil's cell and minimum feature.
 void read_resin(const JsonObject& top, DesignSpec& s) {
   if (!top.has("resin")) return;
-  const JsonObject o =
-      top.object("resin", {"material", "min_feature", "cell", "resin_side", "bilayer"});
+  const JsonObject o = top.object(
+      "resin", {"material", "min_feature", "cell", "resin_side", "bilayer", "layout", "darts"});
   s.resin = o.string("material", s.resin);
   s.resin_side = o.string("resin_side", "top", {"top", "bottom", "convex"});
   s.bilayer = o.boolean("bilayer", false);
@@ -139,6 +139,12 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
                      "the cell must be at least twice min_feature (a piece and a gap)");
   if (s.layout.cell > 0.5 * s.frame)
     throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
+  s.layout.kind = o.string("layout", "squares", {"squares", "darts"});
+  s.layout.darts = static_cast<int>(o.integer("darts", s.layout.darts, 3, 64));
+  if (s.layout.kind == "darts" && s.resin_side == "convex")
+    throw InputError(o.pointer("resin_side"),
+                     "darts are one piece of resin, on one face: \"convex\" lays separate pieces "
+                     "on either face (use \"layout\": \"squares\")");
 }
 
 // /design: the search's budget and the simulations' solver.
@@ -165,6 +171,10 @@ void read_design_settings(const JsonObject& top, DesignSpec& s) {
     throw InputError("/resin/bilayer",
                      "the adjoint method does not place a coat on one face yet: use "
                      "\"method\": \"pattern_search\" for a bilayer");
+  if (s.method == "adjoint" && s.layout.kind == "darts")
+    throw InputError("/resin/layout",
+                     "the adjoint method lays out squares: use \"method\": \"pattern_search\" "
+                     "for darts");
   s.search_stretch = o.boolean("search_stretch", false);
   if (s.method == "adjoint" && s.search_stretch)
     throw InputError(o.pointer("search_stretch"),

@@ -20,6 +20,7 @@ namespace membra {
 struct DensityParameters {
   double mean = 0.5, radial = 0.0, anisotropy = 0.0;
   double stretch = 1.0;  // the pre-stretch's factor (design_stretch.hpp; 1: as the file says)
+  double darts = 1.0;    // darts layout: their width over what the target's metric asks
   double operator()(const Vec2& p, const Box2& frame) const {
     const Vec2 c = 0.5 * (frame.min + frame.max), h = 0.5 * (frame.max - frame.min);
     const double u = (p.x() - c.x()) / h.x(), v = (p.y() - c.y()) / h.y();

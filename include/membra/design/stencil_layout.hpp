@@ -5,6 +5,7 @@
 // is filled), so every piece and every gap of the stencil is at least that wide.
 #include <array>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "membra/model/pattern.hpp"
@@ -15,6 +16,10 @@ namespace membra {
 struct StencilLayout {
   double cell = 0.02;          // m, pitch of the cell grid (frame coordinates)
   double min_feature = 0.004;  // m, the narrowest piece or gap the stencil may have
+  // "squares" (a square per cell, below) or "darts" (resin everywhere but a few wedges of bare
+  // latex, for domes: dart_layout.hpp), and how many darts.
+  std::string kind = "squares";
+  int darts = 6;
 };
 
 // One piece of a laid-out stencil: a rectangle of its cell's shape, centred in the cell.

@@ -1,0 +1,157 @@
+#include "membra/design/dart_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "membra/core/units.hpp"
+#include "membra/design/target_correspondence.hpp"
+#include "membra/model/pattern_spec.hpp"
+
+namespace membra {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Where a ray from the centre leaves a footprint or sheet of half-sides `half`: the disk's
+// radius, or the box's side.
+double reach(const Vec2& half, bool disk, double theta) {
+  if (disk) return half.minCoeff();
+  return std::min(half.x() / std::max(std::abs(std::cos(theta)), 1e-12),
+                  half.y() / std::max(std::abs(std::sin(theta)), 1e-12));
+}
+
+// Through mm, as a scene file holds it, so that the stencil simulated is the one written.
+Vec2 polar(const Vec2& centre, double r, double theta) {
+  const Vec2 p = centre + r * Vec2(std::cos(theta), std::sin(theta));
+  return (p / units::mm) * units::mm;
+}
+
+// One dart around direction `theta`: the wedge from where it is min_feature wide to beyond the
+// frame's corners, as a polygon (empty when it is nowhere that wide).
+PatternSpec dart(const DartProfile& profile, const Box2& frame, bool disk, double theta,
+                 const DartOptions& o) {
+  const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
+  const double sector = 2.0 * kPi / o.darts, shrink = 1.0 - 1.0 / o.lambda;
+  const double r_end = 1.05 * half.norm();
+  constexpr int steps = 96, sub = 9;
+  std::vector<Vec2> left, right;
+  for (int i = 1; i <= steps; ++i) {
+    const double r = r_end * i / steps;
+    // The sector's mean deficit at this frame radius (each ray's u is r over its own half-width).
+    double deficit = 0.0;
+    for (int j = 0; j < sub; ++j) {
+      const double t = theta + sector * ((j + 0.5) / sub - 0.5);
+      deficit += profile.at(t, std::min(r / reach(half, disk, t), 1.0)) / sub;
+    }
+    const double share = std::clamp(o.scale * deficit / shrink, 0.0, 1.0);
+    const double arc = r * sector;  // the sector's width at r
+    const double width = std::min(share * arc, arc - o.min_feature);
+    if (width < o.min_feature) {
+      if (!left.empty()) break;  // narrowing again: the dart ends here
+      continue;
+    }
+    const double half_angle = 0.5 * width / r;
+    left.push_back(polar(centre, r, theta - half_angle));
+    right.push_back(polar(centre, r, theta + half_angle));
+  }
+  PatternSpec p;
+  p.kind = PatternSpec::Kind::polygon;
+  if (left.size() < 2) return p;
+  p.points = left;
+  p.points.insert(p.points.end(), right.rbegin(), right.rend());
+  return p;
+}
+
+}  // namespace
+
+double DartProfile::at(double theta, double u) const {
+  if (rays == 0) return 0.0;
+  double t = std::fmod(theta, 2.0 * kPi);
+  if (t < 0.0) t += 2.0 * kPi;
+  const int k = static_cast<int>(std::lround(t / (2.0 * kPi) * rays)) % rays;
+  const std::vector<double>& sk = s[static_cast<size_t>(k)];
+  const std::vector<double>& dk = deficit[static_cast<size_t>(k)];
+  const double target_s = std::clamp(u, 0.0, 1.0) * sk.back();
+  const auto it = std::lower_bound(sk.begin(), sk.end(), target_s);
+  if (it == sk.begin()) return dk.front();
+  if (it == sk.end()) return dk.back();
+  const size_t i = static_cast<size_t>(it - sk.begin());
+  const double w = (target_s - sk[i - 1]) / std::max(sk[i] - sk[i - 1], 1e-15);
+  return (1.0 - w) * dk[i - 1] + w * dk[i];
+}
+
+DartProfile dart_profile(const TargetSurface& target, int rays, int samples) {
+  const Vec2 lo = target.x.topRows<2>().rowwise().minCoeff();
+  const Vec2 hi = target.x.topRows<2>().rowwise().maxCoeff();
+  const Vec2 c = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  const auto point = [&](double rho, double theta) {
+    const Vec2 q = c + rho * Vec2(std::cos(theta), std::sin(theta));
+    return Vec3(q.x(), q.y(), target_height(target, q));
+  };
+  DartProfile p;
+  p.rays = rays;
+  p.s.assign(static_cast<size_t>(rays), {});
+  p.deficit.assign(static_cast<size_t>(rays), {});
+  const double dtheta = 1e-3;
+  for (int k = 0; k < rays; ++k) {
+    const double theta = 2.0 * kPi * k / rays, length = reach(half, target.disk, theta);
+    auto& s = p.s[static_cast<size_t>(k)];
+    auto& d = p.deficit[static_cast<size_t>(k)];
+    s.push_back(0.0);
+    d.push_back(0.0);
+    Vec3 last = point(0.0, theta);
+    for (int i = 1; i <= samples; ++i) {
+      const double rho = length * i / samples;
+      const Vec3 x = point(rho, theta);
+      s.push_back(s.back() + (x - last).norm());
+      last = x;
+      const double around = (point(rho, theta + dtheta) - point(rho, theta - dtheta)).norm() /
+                            (2.0 * std::sin(dtheta));  // the chord of a circle: exact on a plane
+      d.push_back(1.0 - around / s.back());
+    }
+    p.mean_radius += s.back() / rays;
+  }
+  return p;
+}
+
+Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
+                     const DartOptions& options) {
+  const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
+  // The sheet, a little larger so that its edge particles are inside.
+  PatternSpec sheet;
+  if (disk) {
+    sheet = circle_spec(centre, 1.02 * half.minCoeff());
+  } else {
+    sheet.kind = PatternSpec::Kind::polygon;
+    const Vec2 h = 1.02 * half;
+    sheet.points = {centre - h, centre + Vec2(h.x(), -h.y()), centre + h,
+                    centre + Vec2(-h.x(), h.y())};
+  }
+  std::vector<PatternSpec> parts = {sheet};
+  // Half a sector off the axes, so that a square sheet's darts are symmetric about them.
+  for (int k = 0; k < options.darts; ++k) {
+    PatternSpec d = dart(profile, frame, disk, 2.0 * kPi * (k + 0.5) / options.darts, options);
+    if (!d.points.empty()) parts.push_back(std::move(d));
+  }
+  Stencil out;
+  out.pieces = 1;
+  out.spec = parts.size() == 1 ? sheet : difference_spec(std::move(parts));
+  out.pattern = make_pattern(out.spec, frame.max - frame.min);
+  // The resin's share of the sheet, counted on a fine grid.
+  constexpr int n = 200;
+  int inside = 0, resin = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Vec2 q =
+          frame.min + (frame.max - frame.min).cwiseProduct(Vec2((i + 0.5) / n, (j + 0.5) / n));
+      if (disk && (q - centre).norm() > half.minCoeff()) continue;
+      ++inside;
+      resin += out.pattern->contains(q) ? 1 : 0;
+    }
+  out.outline_area = (frame.max - frame.min).prod() * inside / (n * n);
+  out.resin_share = inside > 0 ? static_cast<double>(resin) / inside : 0.0;
+  return out;
+}
+
+}  // namespace membra

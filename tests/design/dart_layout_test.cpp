@@ -1,0 +1,89 @@
+// Darts (design/dart_layout.hpp): the target's circumferential deficit against a sphere's closed
+// form, and darts as wide as that deficit asks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "membra/design/dart_layout.hpp"
+
+namespace membra {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The bundled cap: 160 mm across, 24 mm high, a sphere of radius 145.3 mm.
+TargetSurface cap() {
+  TargetSpec spec;
+  spec.kind = "cap";
+  spec.size = 0.16;
+  spec.height = 0.024;
+  return make_target(spec);
+}
+
+double sphere_radius() {
+  return (0.08 * 0.08 + 0.024 * 0.024) / (2.0 * 0.024);
+}
+
+// On a sphere of radius R a circle at geodesic distance s from the pole is 2 pi R sin(s/R) long:
+// the deficit is 1 - R sin(s/R) / s, 5.7 % at the cap's rim. The profile, read off the target's
+// triangle mesh (41 vertices across), follows it to 1e-3 on every ray.
+TEST(DartLayout, ACapsDeficitIsItsSpheres) {
+  const DartProfile p = dart_profile(cap());
+  const double R = sphere_radius(), rim = R * std::asin(0.08 / R);
+  EXPECT_NEAR(p.mean_radius, rim, 2e-3 * rim);
+  for (double theta : {0.0, 0.7, 2.0, 4.1})
+    for (double u : {0.25, 0.5, 0.75, 1.0}) {
+      const double s = u * rim;
+      EXPECT_NEAR(p.at(theta, u), 1.0 - R * std::sin(s / R) / s, 1e-3) << theta << " " << u;
+    }
+  EXPECT_NEAR(p.at(1.0, 1.0), 0.057, 0.002);
+}
+
+// A plane asks for no shrink: no darts, the whole sheet is resin.
+TEST(DartLayout, APlaneGetsNoDarts) {
+  TargetSpec spec;
+  spec.kind = "height_field";
+  spec.size = 0.15;
+  spec.formula = "0";
+  const TargetSurface plane = make_target(spec);
+  const DartProfile p = dart_profile(plane);
+  for (double u : {0.3, 1.0}) EXPECT_NEAR(p.at(0.5, u), 0.0, 1e-9);
+  const Stencil s = layout_darts(p, {Vec2::Zero(), Vec2(0.15, 0.15)}, false, {});
+  EXPECT_DOUBLE_EQ(s.resin_share, 1.0);
+  EXPECT_EQ(s.pieces, 1);
+}
+
+// The latex share of a circle of frame radius r is the scale times the deficit there over the
+// latex's shrink 1 - 1/lambda; where that makes a dart narrower than the minimum feature, the
+// circle is all resin.
+TEST(DartLayout, DartsAreAsWideAsTheDeficitAsks) {
+  const DartProfile p = dart_profile(cap());
+  const Box2 frame{Vec2::Zero(), Vec2(0.17, 0.17)};
+  DartOptions o;
+  o.darts = 6;
+  o.scale = 1.2;
+  o.lambda = 1.15;
+  const Stencil s = layout_darts(p, frame, true, o);
+  const Vec2 c(0.085, 0.085);
+  const auto latex_share = [&](double r) {
+    constexpr int n = 3600;
+    int latex = 0;
+    for (int i = 0; i < n; ++i) {
+      const double t = 2.0 * kPi * (i + 0.5) / n;
+      latex += s.pattern->contains(c + r * Vec2(std::cos(t), std::sin(t))) ? 0 : 1;
+    }
+    return static_cast<double>(latex) / n;
+  };
+  for (double u : {0.6, 0.8, 0.95}) {
+    const double asked = o.scale * p.at(0.0, u) / (1.0 - 1.0 / o.lambda);
+    EXPECT_NEAR(latex_share(u * 0.085), asked, 0.02 * asked + 0.005) << u;
+  }
+  // Near the centre the darts would be narrower than 4 mm: none there.
+  EXPECT_EQ(latex_share(0.01), 0.0);
+  EXPECT_GT(s.resin_share, 0.6);
+  EXPECT_LT(s.resin_share, 0.9);
+}
+
+}  // namespace
+}  // namespace membra
