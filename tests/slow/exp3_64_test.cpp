@@ -28,7 +28,12 @@ TEST(SlowExamples, Exp3ConvergesAt64x64WithStiffnessRatio2000) {
 
 TEST(SlowExamples, PerpendicularStripsCreaseLocallyParallelStripsCurveTheSheet) {
   const std::string dir = std::string(MEMBRA_SOURCE_DIR) + "/examples/";
-  const RunResult exp2 = run_scene(load_scene(dir + "exp2_perpendicular.json", {}));
+  // exp2 has two stable forms at 41 x 41 (docs/forms.md): the paper's creases running the whole
+  // sheet along the stretch, which the static solver's damped path reaches (33.4 mJ), and a lower
+  // egg-crate of creases broken at every strip, which Newton reaches (31.9 mJ). The test is of
+  // the paper's specimen, so it takes the damped path.
+  const RunResult exp2 =
+      run_scene(load_scene(dir + "exp2_perpendicular.json", {"simulation.solver=static"}));
   const RunResult exp3 = run_scene(load_scene(dir + "exp3_parallel.json", {}));
   ASSERT_TRUE(exp2.solve.converged) << exp2.solve.message;
   ASSERT_TRUE(exp3.solve.converged) << exp3.solve.message;
