@@ -6,6 +6,7 @@
 
 #include "membra/core/units.hpp"
 #include "membra/design/target_correspondence.hpp"
+#include "membra/measure/curvature.hpp"
 #include "membra/model/pattern_spec.hpp"
 
 namespace membra {
@@ -115,8 +116,8 @@ DartProfile dart_profile(const TargetSurface& target, int rays, int samples) {
   return p;
 }
 
-Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
-                     const DartOptions& options) {
+// The sheet in resin, less `holes` of bare latex: one piece.
+Stencil sheet_less(std::vector<PatternSpec> holes, const Box2& frame, bool disk) {
   const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
   // The sheet, a little larger so that its edge particles are inside.
   PatternSpec sheet;
@@ -129,11 +130,8 @@ Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
                     centre + Vec2(-h.x(), h.y())};
   }
   std::vector<PatternSpec> parts = {sheet};
-  // Half a sector off the axes, so that a square sheet's darts are symmetric about them.
-  for (int k = 0; k < options.darts; ++k) {
-    PatternSpec d = dart(profile, frame, disk, 2.0 * kPi * (k + 0.5) / options.darts, options);
-    if (!d.points.empty()) parts.push_back(std::move(d));
-  }
+  for (PatternSpec& h : holes)
+    if (!h.points.empty()) parts.push_back(std::move(h));
   Stencil out;
   out.pieces = 1;
   out.spec = parts.size() == 1 ? sheet : difference_spec(std::move(parts));
@@ -152,6 +150,106 @@ Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
   out.outline_area = (frame.max - frame.min).prod() * inside / (n * n);
   out.resin_share = inside > 0 ? static_cast<double>(resin) / inside : 0.0;
   return out;
+}
+
+Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
+                     const DartOptions& options) {
+  std::vector<PatternSpec> darts;
+  // Half a sector off the axes, so that a square sheet's darts are symmetric about them.
+  for (int k = 0; k < options.darts; ++k)
+    darts.push_back(dart(profile, frame, disk, 2.0 * kPi * (k + 0.5) / options.darts, options));
+  return sheet_less(std::move(darts), frame, disk);
+}
+
+RowProfile row_profile(const TargetSurface& target, int axis, int bins) {
+  const int across = 1 - axis;
+  const double lo = target.x.row(across).minCoeff(), hi = target.x.row(across).maxCoeff();
+  const double width = (hi - lo) / bins;
+  // Angle defects over areas, per bin across.
+  const GaussianCurvature k = gaussian_curvature(target.x, target.triangles);
+  std::vector<double> defect(static_cast<size_t>(bins)), area(static_cast<size_t>(bins));
+  // Each vertex shared between the two nearest bin centres (so a mirrored target bins mirrored).
+  for (Eigen::Index i = 0; i < target.x.cols(); ++i) {
+    if (!k.interior[static_cast<size_t>(i)]) continue;
+    const double t = std::clamp((target.x(across, i) - lo) / width - 0.5, 0.0, bins - 1.0);
+    const int b = std::min(static_cast<int>(t), bins - 2);
+    const double w = t - b;
+    for (const auto& [bin, weight] : {std::pair{b, 1.0 - w}, std::pair{b + 1, w}}) {
+      defect[static_cast<size_t>(bin)] += weight * k.angle_defect[static_cast<size_t>(i)];
+      area[static_cast<size_t>(bin)] += weight * k.area[static_cast<size_t>(i)];
+    }
+  }
+  RowProfile p;
+  p.axis = axis;
+  std::vector<double> length(static_cast<size_t>(bins));
+  // L'' = -K L outwards from the middle, L = 1 and L' = 0 there (bins of equal width).
+  const auto curvature = [&](size_t b) { return area[b] > 0.0 ? defect[b] / area[b] : 0.0; };
+  const int mid = bins / 2;
+  for (int side : {-1, +1}) {
+    double l = 1.0, slope = 0.0;
+    for (int b = mid; b >= 0 && b < bins; b += side) {
+      if (b != mid) {
+        slope -= curvature(static_cast<size_t>(b)) * l * width;
+        l += slope * width;
+      }
+      length[static_cast<size_t>(b)] = l;
+    }
+  }
+  const double longest = *std::max_element(length.begin(), length.end());
+  for (int b = 0; b < bins; ++b) {
+    p.v.push_back(lo + (b + 0.5) * width - 0.5 * (lo + hi));
+    p.share.push_back(1.0 - length[static_cast<size_t>(b)] / longest);
+  }
+  return p;
+}
+
+Stencil layout_fisheye_darts(const RowProfile& profile, const Box2& frame, const DartOptions& o) {
+  const int a = profile.axis, b = 1 - a;
+  const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
+  const double pitch = (frame.max(a) - frame.min(a)) / o.darts, shrink = 1.0 - 1.0 / o.lambda;
+  // The target's footprint across laid over the frame's, centre on centre.
+  const double reach = std::max(-profile.v.front(), profile.v.back()) + 1e-12;
+  const auto share = [&](double v) {  // linear between bin centres, held beyond the last
+    const double t = std::clamp(v / half(b) * reach, profile.v.front(), profile.v.back());
+    const auto it = std::lower_bound(profile.v.begin(), profile.v.end(), t);
+    const size_t i =
+        std::clamp<size_t>(static_cast<size_t>(it - profile.v.begin()), 1, profile.v.size() - 1);
+    const double w = (t - profile.v[i - 1]) / (profile.v[i] - profile.v[i - 1]);
+    return (1.0 - w) * profile.share[i - 1] + w * profile.share[i];
+  };
+  std::vector<PatternSpec> lenses;
+  constexpr int samples = 97;
+  for (int k = 0; k < o.darts; ++k) {
+    const double along = frame.min(a) + pitch * (k + 0.5);
+    std::vector<Vec2> left, right;
+    const auto close = [&] {  // a run of wide-enough samples becomes one lens
+      if (left.size() >= 2) {
+        PatternSpec p;
+        p.points = left;
+        p.points.insert(p.points.end(), right.rbegin(), right.rend());
+        lenses.push_back(std::move(p));
+      }
+      left.clear();
+      right.clear();
+    };
+    for (int i = 0; i < samples; ++i) {
+      const double v = 1.04 * half(b) * (2.0 * i / (samples - 1) - 1.0);
+      const double width = std::min(std::clamp(o.scale * share(v) / shrink, 0.0, 1.0) * pitch,
+                                    pitch - o.min_feature);
+      if (width < o.min_feature) {
+        close();
+        continue;
+      }
+      Vec2 l, r;
+      l(a) = along - 0.5 * width;
+      r(a) = along + 0.5 * width;
+      l(b) = r(b) = centre(b) + v;
+      left.push_back((l / units::mm) * units::mm);
+      right.push_back((r / units::mm) * units::mm);
+    }
+    close();
+  }
+  return sheet_less(std::move(lenses), frame, false);
 }
 
 }  // namespace membra

@@ -71,12 +71,14 @@ bool mostly_bent(const TargetSurface& t) {
   return h2 > 0.0 && k.positive - k.negative < 0.2 * h2;
 }
 
-// A dome: nearly all of its Gaussian curvature positive (integrated K+ over 0.9 of |K|), which
-// darts make (dart_layout.hpp).
-bool dome(const TargetSurface& t) {
-  if (t.triangles.empty()) return false;
+// +1 for a dome, -1 for a saddle: nearly all of the target's Gaussian curvature of one sign
+// (over 0.9 of the integrated |K|), which darts make (dart_layout.hpp); else 0.
+int dome_or_saddle(const TargetSurface& t) {
+  if (t.triangles.empty()) return 0;
   const GaussianCurvature k = gaussian_curvature(t.x, t.triangles);
-  return k.positive > 0.0 && k.positive > 0.9 * (k.positive - k.negative);
+  const double all = k.positive - k.negative;
+  if (all <= 0.0) return 0;
+  return k.positive > 0.9 * all ? +1 : -k.negative > 0.9 * all ? -1 : 0;
 }
 
 }  // namespace
@@ -98,12 +100,15 @@ DesignVerdict design_verdict(const DesignResult& r) {
          "shrink in the plane does not make and a coat on one face does: try \"resin\": "
          "{\"bilayer\": true} with the frame stretched across its ridges (and \"resin_side\": "
          "\"convex\" where it bends both ways)";
-  } else if (v.grade != "meets_goal" && r.spec.layout.kind == "darts") {
+  } else if (v.grade != "meets_goal" && r.spec.layout.kind != "squares") {
     s << "; darts follow the target's metric alone: try another number of darts, a finer sheet, "
          "or a frame as wide as the target measured along its surface";
-  } else if (v.grade != "meets_goal" && !r.spec.bilayer && dome(r.target)) {
+  } else if (v.grade != "meets_goal" && !r.spec.bilayer && dome_or_saddle(r.target) > 0) {
     s << "; the target is a dome, which darts make: try \"resin\": {\"layout\": \"darts\"} "
          "with a frame as wide as the target measured along its surface";
+  } else if (v.grade != "meets_goal" && !r.spec.bilayer && dome_or_saddle(r.target) < 0) {
+    s << "; the target is a saddle, which fisheye darts make: try \"resin\": {\"layout\": "
+         "\"fisheye_darts\"} with the frame stretched along one axis (\"lambda\": [1.1, 1])";
   } else if (v.grade != "meets_goal" && r.method != "adjoint" && !r.spec.bilayer) {
     s << "; try \"method\": \"adjoint\", which designs a density per cell";
   }

@@ -28,10 +28,12 @@ class Search {
         r_(r),
         progress_(progress),
         frame_{Vec2::Zero(), Vec2(spec.frame, spec.frame)} {
-    if (darts()) note_frame_fit();
+    if (spec_.layout.kind == "darts") note_frame_fit();
+    if (spec_.layout.kind == "fisheye_darts") rows_ = row_profile(r.target, stretch_axis());
   }
 
-  bool darts() const { return spec_.layout.kind == "darts"; }
+  // Darts of either kind: their scale is the search's parameter.
+  bool darts() const { return spec_.layout.kind != "squares"; }
 
   bool out_of_budget() const { return n_ >= spec_.evaluations || clock_.seconds() >= spec_.budget; }
   int evaluations() const { return n_; }
@@ -71,6 +73,8 @@ class Search {
   using Tried = std::tuple<double, double, std::vector<StencilSquare>>;
   std::vector<Tried> tried_;
   DartProfile profile_;  // darts: the target's deficit
+  RowProfile rows_;      // fisheye darts: the rows' latex shares
+  int stretch_axis() const { return spec_.lambda.x() >= spec_.lambda.y() ? 0 : 1; }
 };
 
 // Darts keep lengths along the spokes: a frame as wide as the target measured along its surface
@@ -91,8 +95,11 @@ void Search::note_frame_fit() {
 Stencil Search::make_stencil(const DensityParameters& d) const {
   if (!darts())
     return design_stencil(spec_, r_.target, [&](const Vec2& p) { return d(p, frame_); });
-  // Darts shrink circles whichever way they run: the stretch's geometric mean sets by how much.
   const Vec2 lambda = with_stretch(spec_, d.stretch).lambda;
+  if (spec_.layout.kind == "fisheye_darts")  // they shorten rows along the stretch
+    return layout_fisheye_darts(
+        rows_, frame_, {spec_.layout.darts, d.darts, lambda(rows_.axis), spec_.layout.min_feature});
+  // Darts shrink circles whichever way they run: the stretch's geometric mean sets by how much.
   return layout_darts(
       profile_, frame_, r_.target.disk,
       {spec_.layout.darts, d.darts, std::sqrt(lambda.prod()), spec_.layout.min_feature});
@@ -134,12 +141,13 @@ void Search::finish() {
 // in tension stays flat): a few plain starts are tried too, and the search goes on from the best
 // of them.
 std::vector<DensityParameters> starts(const DensityParameters& start, bool darts) {
-  // Darts: as wide as the deficit asks, and half as wide again (measured: the latex between
-  // spokes shrinks less than free latex would, so the best scale is usually above 1).
+  // Darts: as wide as the metric asks, half as wide, and half as wide again (measured: the
+  // cap's darts, held by the spokes, do best at 1.4; the saddle's fisheye darts near 0.5).
   if (darts) {
-    DensityParameters wider = start;
-    wider.darts = 1.5;
-    return {start, wider};
+    std::vector<DensityParameters> out(3, start);
+    out[1].darts = 0.5;
+    out[2].darts = 1.5;
+    return out;
   }
   std::vector<DensityParameters> out = {start};
   for (double mean : {start.mean, start.mean - 0.25, start.mean + 0.25}) {

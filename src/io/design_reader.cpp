@@ -139,9 +139,9 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
                      "the cell must be at least twice min_feature (a piece and a gap)");
   if (s.layout.cell > 0.5 * s.frame)
     throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
-  s.layout.kind = o.string("layout", "squares", {"squares", "darts"});
+  s.layout.kind = o.string("layout", "squares", {"squares", "darts", "fisheye_darts"});
   s.layout.darts = static_cast<int>(o.integer("darts", s.layout.darts, 3, 64));
-  if (s.layout.kind == "darts" && s.resin_side == "convex")
+  if (s.layout.kind != "squares" && s.resin_side == "convex")
     throw InputError(o.pointer("resin_side"),
                      "darts are one piece of resin, on one face: \"convex\" lays separate pieces "
                      "on either face (use \"layout\": \"squares\")");
@@ -171,7 +171,7 @@ void read_design_settings(const JsonObject& top, DesignSpec& s) {
     throw InputError("/resin/bilayer",
                      "the adjoint method does not place a coat on one face yet: use "
                      "\"method\": \"pattern_search\" for a bilayer");
-  if (s.method == "adjoint" && s.layout.kind == "darts")
+  if (s.method == "adjoint" && s.layout.kind != "squares")
     throw InputError("/resin/layout",
                      "the adjoint method lays out squares: use \"method\": \"pattern_search\" "
                      "for darts");

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "membra/design/dart_layout.hpp"
+#include "membra/measure/curvature.hpp"
 
 namespace membra {
 namespace {
@@ -83,6 +84,71 @@ TEST(DartLayout, DartsAreAsWideAsTheDeficitAsks) {
   EXPECT_EQ(latex_share(0.01), 0.0);
   EXPECT_GT(s.resin_share, 0.6);
   EXPECT_LT(s.resin_share, 0.9);
+}
+
+// The bundled saddle: z = h (x^2 - y^2) / (s/2)^2, 150 mm square, h = 15 mm.
+TargetSurface saddle() {
+  TargetSpec spec;
+  spec.kind = "saddle";
+  spec.size = 0.15;
+  spec.height = 0.015;
+  return make_target(spec);
+}
+
+// Rows along x of a saddle must be longer at its edges than through its middle: L'' = -K L with
+// K < 0 makes L = cosh(sqrt(-K) v) for a uniform K. The share of latex a row asks is
+// 1 - L / L_max: largest through the middle, none at the edges, symmetric; through the middle
+// it is 1 - 1 / cosh(sqrt(-K) s/2) for the saddle's mean K, within 15 % (its K is not uniform:
+// -4c^2 at the centre, a third less at the edges' middles, so the middle rows ask a little more).
+TEST(DartLayout, ASaddlesRowsAreLongerAtItsEdges) {
+  const TargetSurface t = saddle();
+  const RowProfile p = row_profile(t, 0);
+  ASSERT_EQ(p.v.size(), 25u);
+  const GaussianCurvature k = gaussian_curvature(t.x, t.triangles);
+  double defect = 0.0, area = 0.0;
+  for (size_t i = 0; i < k.interior.size(); ++i)
+    if (k.interior[i]) defect += k.angle_defect[i], area += k.area[i];
+  ASSERT_LT(defect, 0.0);
+  const double expected = 1.0 - 1.0 / std::cosh(std::sqrt(-defect / area) * 0.075);
+  const double middle = p.share[12];
+  EXPECT_NEAR(p.v[12], 0.0, 1e-12);
+  EXPECT_NEAR(middle, expected, 0.15 * expected);
+  EXPECT_LT(p.share.front(), 0.05 * middle);
+  for (size_t i = 0; i < p.v.size(); ++i) EXPECT_NEAR(p.share[i], p.share[24 - i], 1e-9);
+  for (size_t i = 1; i <= 12; ++i) EXPECT_GT(p.share[i], p.share[i - 1]);
+  // A dome's rows are the other way round: longest through the middle.
+  const RowProfile dome = row_profile(cap(), 0);
+  EXPECT_LT(dome.share[12], 1e-3);
+  EXPECT_GT(dome.share.front(), 0.02);
+}
+
+// Fisheye darts across the stretch: the latex share of the middle row is the scale times the
+// share asked over 1 - 1/lambda; every lens is at least the minimum feature wide.
+TEST(DartLayout, FisheyeDartsShortenTheRowsAsAsked) {
+  const RowProfile p = row_profile(saddle(), 0);
+  const Box2 frame{Vec2::Zero(), Vec2(0.155, 0.155)};
+  DartOptions o;
+  o.darts = 3;
+  o.scale = 0.6;
+  o.lambda = 1.1;
+  const Stencil s = layout_fisheye_darts(p, frame, o);
+  const auto latex_share = [&](double y) {
+    constexpr int n = 3100;
+    int latex = 0;
+    for (int i = 0; i < n; ++i)
+      latex += s.pattern->contains(Vec2(0.155 * (i + 0.5) / n, y)) ? 0 : 1;
+    return static_cast<double>(latex) / n;
+  };
+  const double asked = o.scale * p.share[12] / (1.0 - 1.0 / o.lambda);
+  EXPECT_NEAR(latex_share(0.0775), asked, 0.03 * asked);
+  EXPECT_EQ(s.pieces, 1);
+  const auto& parts = s.spec.parts;
+  ASSERT_EQ(parts.size(), 4u);  // the sheet and three lenses
+  for (size_t i = 1; i < parts.size(); ++i) {
+    const std::vector<Vec2>& q = parts[i].points;
+    const size_t half = q.size() / 2;  // left side up, right side down
+    for (size_t j = 0; j < half; ++j) EXPECT_GE(q[q.size() - 1 - j].x() - q[j].x(), 0.004 - 1e-6);
+  }
 }
 
 }  // namespace

@@ -68,6 +68,11 @@ TEST(DesignVerdict, ABentTargetIsPointedAtACoatOnOneFace) {
   v = design_verdict(cap);
   EXPECT_EQ(v.sentence.find("bilayer"), std::string::npos) << v.sentence;
   EXPECT_NE(v.sentence.find("\"layout\": \"darts\""), std::string::npos) << v.sentence;
+  DesignResult saddle = design_with(3.0, 4.0);
+  spec.kind = "saddle";
+  saddle.target = make_target(spec);
+  v = design_verdict(saddle);
+  EXPECT_NE(v.sentence.find("\"fisheye_darts\""), std::string::npos) << v.sentence;
   cap.spec.layout.kind = "darts";
   v = design_verdict(cap);
   EXPECT_NE(v.sentence.find("another number of darts"), std::string::npos) << v.sentence;

@@ -42,4 +42,24 @@ struct DartOptions {
 Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
                      const DartOptions& options);
 
+// Fisheye darts (`"layout": "fisheye_darts"`): double-pointed lenses of bare latex lying across
+// a stretch along one axis, spaced evenly along it. A row along the stretch keeps the length of
+// its resin and loses the shrink of its latex, so the release sets each row's length L(v) by its
+// latex share at v, the distance across. Columns keep theirs (nothing shrinks across), and the
+// metric dv^2 + L(v)^2 du^2 has the Gaussian curvature K = -L''/L: rows longer at the edges than
+// in the middle make a saddle (K < 0), shorter ones a dome.
+struct RowProfile {
+  int axis = 0;                  // the stretch's axis: rows run along it (0: x, 1: y)
+  std::vector<double> v, share;  // across, m from the centre, and the latex share L asks there
+};
+// The rows' lengths from the target's Gaussian curvature averaged along each row (angle defects
+// over areas, in an odd number of bins across, the middle one on the centre): L'' = -K L from L = 1, L' = 0 at the centre; the latex share of a
+// row is 1 - L / L_max (the longest rows are all resin), before the scale and the shrink.
+RowProfile row_profile(const TargetSurface& target, int axis, int bins = 25);
+// Lenses at `darts` positions along the axis, each as wide at v as its pitch times the scale
+// times the share there over 1 - 1/lambda (lambda: the stretch along the axis); narrower than
+// the minimum feature, none.
+Stencil layout_fisheye_darts(const RowProfile& profile, const Box2& frame,
+                             const DartOptions& options);
+
 }  // namespace membra
