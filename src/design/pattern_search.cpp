@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -29,7 +30,14 @@ class Search {
         progress_(progress),
         frame_{Vec2::Zero(), Vec2(spec.frame, spec.frame)} {
     if (spec_.layout.kind == "darts") note_frame_fit();
-    if (spec_.layout.kind == "fisheye_darts") rows_ = row_profile(r.target, stretch_axis());
+    if (spec_.layout.kind == "fisheye_darts") {
+      rows_ = row_profile(r.target, stretch_axis());
+      if (spec_.lambda.minCoeff() > 1.0)
+        note(
+            "Fisheye darts assume the latex stretched along one axis: with both stretched, the "
+            "lenses shorten the columns too, which their widths do not allow for (use a "
+            "\"lambda\" of 1 across).");
+    }
   }
 
   // Darts of either kind: their scale is the search's parameter.
@@ -59,6 +67,9 @@ class Search {
   bool record(const DensityParameters& d, Evaluation&& e, double seconds);
   Stencil make_stencil(const DensityParameters& d) const;
   void note_frame_fit();
+  void note(const std::string& text) {
+    r_.message += std::string(r_.message.empty() ? "" : " ") + text;
+  }
 
   const DesignSpec& spec_;
   DesignResult& r_;
@@ -89,7 +100,7 @@ void Search::note_frame_fit() {
                 "Darts keep lengths from the centre: a frame %.0f mm across makes the target at "
                 "its size (this one is %.0f mm).",
                 fit / units::mm, spec_.frame / units::mm);
-  r_.message += std::string(r_.message.empty() ? "" : " ") + text;
+  note(text);
 }
 
 Stencil Search::make_stencil(const DensityParameters& d) const {

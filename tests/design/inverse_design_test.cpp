@@ -275,10 +275,10 @@ TEST(InverseDesign, DartsMakeADome) {
 
 // Fisheye darts make a saddle: the bundled one (150 mm square, +-15 mm) on a 155 mm frame stretched
 // 1.1 along x only, three lenses of latex across the stretch, on a 17 x 17 sheet, comes within
-// the goal (measured 1.83 %, a flat sheet 4.29 %; squares never came closer than flat), an
-// anticlastic form, and the scene reproduces it.
+// the goal in four simulations (measured 1.80 % at a scale of 0.75, a flat sheet 4.29 %; squares
+// never came closer than flat), an anticlastic form, and the scene reproduces it.
 TEST(InverseDesign, FisheyeDartsMakeASaddle) {
-  json design = small_design({{"saddle", {{"size", 150}, {"height", 15}}}}, 8);
+  json design = small_design({{"saddle", {{"size", 150}, {"height", 15}}}}, 4);
   design["frame"] = {{"size", 155}, {"lambda", {1.1, 1.0}}};
   design["sheet"]["resolution"] = 17;
   design["resin"].update({{"layout", "fisheye_darts"}, {"darts", 3}});
@@ -287,7 +287,22 @@ TEST(InverseDesign, FisheyeDartsMakeASaddle) {
   EXPECT_LT(d.rms_error, 0.5 * d.flat_error);
   EXPECT_EQ(d.run.form_global, "anticlastic");
   EXPECT_EQ(d.stencil.spec.parts.size(), 4u);  // the sheet less three lenses
+  EXPECT_TRUE(d.message.empty()) << d.message;
   expect_scene_reproduces_form(d);
+}
+
+// Fisheye darts size their lenses for latex that shrinks along the rows only: under a stretch of
+// both axes the design says so, and a dome's darts on a frame narrower than the cap measured
+// along its surface name the frame that fits (169 mm).
+TEST(InverseDesign, DartsSayWhenTheFrameDoesNotSuitThem) {
+  json design = small_design({{"saddle", {{"size", 150}, {"height", 15}}}}, 1);
+  design["resin"].update({{"layout", "fisheye_darts"}, {"darts", 3}});
+  DesignResult d = run_design(parse_design(design));
+  EXPECT_NE(d.message.find("stretched along one axis"), std::string::npos) << d.message;
+  design = small_design({{"cap", {{"diameter", 160}, {"height", 24}}}}, 1);
+  design["resin"].update({{"layout", "darts"}});
+  d = run_design(parse_design(design));
+  EXPECT_NE(d.message.find("a frame 169 mm across"), std::string::npos) << d.message;
 }
 
 // "resin_side": "convex" on an S-shaped wave, z = 5 sin(pi x / 75) mm: the pieces under its crest
