@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "membra/core/units.hpp"
 #include "membra/design/target_correspondence.hpp"
@@ -26,6 +27,17 @@ double reach(const Vec2& half, bool disk, double theta) {
 Vec2 polar(const Vec2& centre, double r, double theta) {
   const Vec2 p = centre + r * Vec2(std::cos(theta), std::sin(theta));
   return (p / units::mm) * units::mm;
+}
+
+// The polygon between two sides sampled in the same order (left up, right back down); empty when
+// fewer than two samples.
+PatternSpec outline(const std::vector<Vec2>& left, const std::vector<Vec2>& right) {
+  PatternSpec p;
+  p.kind = PatternSpec::Kind::polygon;
+  if (left.size() < 2) return p;
+  p.points = left;
+  p.points.insert(p.points.end(), right.rbegin(), right.rend());
+  return p;
 }
 
 // One dart around direction `theta`: the wedge from where it is min_feature wide to beyond the
@@ -56,12 +68,7 @@ PatternSpec dart(const DartProfile& profile, const Box2& frame, bool disk, doubl
     left.push_back(polar(centre, r, theta - half_angle));
     right.push_back(polar(centre, r, theta + half_angle));
   }
-  PatternSpec p;
-  p.kind = PatternSpec::Kind::polygon;
-  if (left.size() < 2) return p;
-  p.points = left;
-  p.points.insert(p.points.end(), right.rbegin(), right.rend());
-  return p;
+  return outline(left, right);
 }
 
 }  // namespace
@@ -103,7 +110,9 @@ DartProfile dart_profile(const TargetSurface& target, int rays, int samples) {
     d.push_back(0.0);
     Vec3 last = point(0.0, theta);
     for (int i = 1; i <= samples; ++i) {
-      const double rho = length * i / samples;
+      // The last sample a little inside the rim, so that the sideways points at theta +- dtheta
+      // stay on a square footprint too (beyond it the target's height is its nearest vertex's).
+      const double rho = length * i / samples * (1.0 - 4.0 * dtheta);
       const Vec3 x = point(rho, theta);
       s.push_back(s.back() + (x - last).norm());
       last = x;
@@ -111,12 +120,17 @@ DartProfile dart_profile(const TargetSurface& target, int rays, int samples) {
                             (2.0 * std::sin(dtheta));  // the chord of a circle: exact on a plane
       d.push_back(1.0 - around / s.back());
     }
-    p.mean_radius += s.back() / rays;
+    // The ray's length along the surface, scaled from where it leaves the footprint to the
+    // inscribed half-width: the frame's half-width is laid over that (dart() and the frame fit).
+    p.radius += s.back() * half.minCoeff() / (length * (1.0 - 4.0 * dtheta)) / rays;
   }
   return p;
 }
 
-// The sheet in resin, less `holes` of bare latex: one piece.
+namespace {
+
+// The sheet in resin, less `holes` of bare latex (which leave it in one piece: each dart and
+// lens ends inside the sheet or at its rim, never across it).
 Stencil sheet_less(std::vector<PatternSpec> holes, const Box2& frame, bool disk) {
   const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
   // The sheet, a little larger so that its edge particles are inside.
@@ -152,16 +166,21 @@ Stencil sheet_less(std::vector<PatternSpec> holes, const Box2& frame, bool disk)
   return out;
 }
 
+}  // namespace
+
 Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
                      const DartOptions& options) {
   std::vector<PatternSpec> darts;
-  // Half a sector off the axes, so that a square sheet's darts are symmetric about them.
+  // Centred half a sector from the x axis: for an even count the darts are symmetric about
+  // both axes (six darts: two on the y axis, none on the x axis).
   for (int k = 0; k < options.darts; ++k)
     darts.push_back(dart(profile, frame, disk, 2.0 * kPi * (k + 0.5) / options.darts, options));
   return sheet_less(std::move(darts), frame, disk);
 }
 
 RowProfile row_profile(const TargetSurface& target, int axis, int bins) {
+  if (bins < 3 || bins % 2 == 0)
+    throw std::invalid_argument("row_profile: an odd number of bins, at least 3");
   const int across = 1 - axis;
   const double lo = target.x.row(across).minCoeff(), hi = target.x.row(across).maxCoeff();
   const double width = (hi - lo) / bins;
@@ -184,15 +203,16 @@ RowProfile row_profile(const TargetSurface& target, int axis, int bins) {
   std::vector<double> length(static_cast<size_t>(bins));
   // L'' = -K L outwards from the middle, L = 1 and L' = 0 there (bins of equal width).
   const auto curvature = [&](size_t b) { return area[b] > 0.0 ? defect[b] / area[b] : 0.0; };
+  // Velocity Verlet from the middle bin (second order: exact for a constant K to O(K^2 v^4)).
   const int mid = bins / 2;
   for (int side : {-1, +1}) {
     double l = 1.0, slope = 0.0;
-    for (int b = mid; b >= 0 && b < bins; b += side) {
-      if (b != mid) {
-        slope -= curvature(static_cast<size_t>(b)) * l * width;
-        l += slope * width;
-      }
-      length[static_cast<size_t>(b)] = l;
+    length[static_cast<size_t>(mid)] = l;
+    for (int b = mid; b + side >= 0 && b + side < bins; b += side) {
+      slope -= 0.5 * curvature(static_cast<size_t>(b)) * l * width;
+      l += slope * width;
+      slope -= 0.5 * curvature(static_cast<size_t>(b + side)) * l * width;
+      length[static_cast<size_t>(b + side)] = l;
     }
   }
   const double longest = *std::max_element(length.begin(), length.end());
@@ -208,7 +228,7 @@ Stencil layout_fisheye_darts(const RowProfile& profile, const Box2& frame, const
   const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
   const double pitch = (frame.max(a) - frame.min(a)) / o.darts, shrink = 1.0 - 1.0 / o.lambda;
   // The target's footprint across laid over the frame's, centre on centre.
-  const double reach = std::max(-profile.v.front(), profile.v.back()) + 1e-12;
+  const double reach = profile.v.back() + 0.5 * (profile.v[1] - profile.v[0]);  // half-width
   const auto share = [&](double v) {  // linear between bin centres, held beyond the last
     const double t = std::clamp(v / half(b) * reach, profile.v.front(), profile.v.back());
     const auto it = std::lower_bound(profile.v.begin(), profile.v.end(), t);
@@ -223,17 +243,13 @@ Stencil layout_fisheye_darts(const RowProfile& profile, const Box2& frame, const
     const double along = frame.min(a) + pitch * (k + 0.5);
     std::vector<Vec2> left, right;
     const auto close = [&] {  // a run of wide-enough samples becomes one lens
-      if (left.size() >= 2) {
-        PatternSpec p;
-        p.points = left;
-        p.points.insert(p.points.end(), right.rbegin(), right.rend());
-        lenses.push_back(std::move(p));
-      }
+      lenses.push_back(outline(left, right));
       left.clear();
       right.clear();
     };
     for (int i = 0; i < samples; ++i) {
-      const double v = 1.04 * half(b) * (2.0 * i / (samples - 1) - 1.0);
+      // A resin border at least min_feature wide across both ends keeps the sheet one piece.
+      const double v = (half(b) - o.min_feature) * (2.0 * i / (samples - 1) - 1.0);
       const double width = std::min(std::clamp(o.scale * share(v) / shrink, 0.0, 1.0) * pitch,
                                     pitch - o.min_feature);
       if (width < o.min_feature) {

@@ -103,10 +103,12 @@ DesignVerdict design_verdict(const DesignResult& r) {
   } else if (v.grade != "meets_goal" && r.spec.layout.kind != "squares") {
     s << "; darts follow the target's metric alone: try another number of darts, a finer sheet, "
          "or a frame as wide as the target measured along its surface";
-  } else if (v.grade != "meets_goal" && !r.spec.bilayer && dome_or_saddle(r.target) > 0) {
+  } else if (const int kind =
+                 v.grade != "meets_goal" && !r.spec.bilayer ? dome_or_saddle(r.target) : 0;
+             kind > 0) {
     s << "; the target is a dome, which darts make: try \"resin\": {\"layout\": \"darts\"} "
          "with a frame as wide as the target measured along its surface";
-  } else if (v.grade != "meets_goal" && !r.spec.bilayer && dome_or_saddle(r.target) < 0) {
+  } else if (kind < 0) {
     s << "; the target is a saddle, which fisheye darts make: try \"resin\": {\"layout\": "
          "\"fisheye_darts\"} with the frame stretched along one axis (\"lambda\": [1.1, 1])";
   } else if (v.grade != "meets_goal" && r.method != "adjoint" && !r.spec.bilayer) {

@@ -53,7 +53,7 @@ class Search {
   bool try_density(const DensityParameters& d) {
     const Stopwatch t;
     Stencil stencil = make_stencil(d);
-    const Tried key{d.stretch, d.darts, stencil.squares};
+    const Tried key{d.stretch, stencil.squares, hole_corners(stencil)};
     if (std::find(tried_.begin(), tried_.end(), key) != tried_.end()) return false;
     tried_.push_back(key);
     Evaluation e = simulate_stencil(with_stretch(spec_, d.stretch), r_.target, std::move(stencil));
@@ -80,8 +80,16 @@ class Search {
   Evaluation best_;
   bool best_converged_ = false;
   int n_ = 0;
-  // The stencils simulated, by their stretch, darts' scale and pieces.
-  using Tried = std::tuple<double, double, std::vector<StencilSquare>>;
+  // The stencils simulated, by their stretch and pieces (squares, or the darts' corners: scales
+  // that lay out the same darts, or none, are one stencil).
+  using Tried = std::tuple<double, std::vector<StencilSquare>, std::vector<double>>;
+  static std::vector<double> hole_corners(const Stencil& s) {
+    std::vector<double> out;
+    if (s.squares.empty() && s.spec.kind == PatternSpec::Kind::difference)
+      for (const PatternSpec& part : s.spec.parts)
+        for (const Vec2& p : part.points) out.insert(out.end(), {p.x(), p.y()});
+    return out;
+  }
   std::vector<Tried> tried_;
   DartProfile profile_;  // darts: the target's deficit
   RowProfile rows_;      // fisheye darts: the rows' latex shares
@@ -93,7 +101,19 @@ class Search {
 // alignment counts as error, so the design says which frame fits.
 void Search::note_frame_fit() {
   profile_ = dart_profile(r_.target);
-  const double fit = 2.0 * profile_.mean_radius;
+  // The darts' width follows the circles' deficit: a target whose circles are, all round, nowhere
+  // shorter than on a plane (a saddle) gets none.
+  double most = -1.0;
+  for (size_t i = 0; i < profile_.deficit[0].size(); ++i) {
+    double mean = 0.0;
+    for (const auto& ray : profile_.deficit) mean += ray[i] / profile_.rays;
+    most = std::max(most, mean);
+  }
+  if (most <= 1e-9)
+    note(
+        "The target's circles are nowhere shorter than on a plane: darts have no width here "
+        "(they make domes; a saddle takes \"fisheye_darts\").");
+  const double fit = 2.0 * profile_.radius;
   if (std::abs(spec_.frame - fit) <= 0.05 * fit) return;
   char text[200];
   std::snprintf(text, sizeof text,
@@ -140,9 +160,9 @@ void Search::finish() {
                                               (r_.history.empty() ? std::string("no evaluation")
                                                                   : r_.history.back().note));
   if (!best_converged_)
-    r_.message += std::string(r_.message.empty() ? "" : " ") +
-                  "No simulation reached equilibrium: the form shown is the last state of the "
-                  "best one, not a prediction (more iterations, or the static solver).";
+    note(
+        "No simulation reached equilibrium: the form shown is the last state of the best one, "
+        "not a prediction (more iterations, or the static solver).");
   r_.best = best_d_;
   r_.spec = with_stretch(spec_, best_d_.stretch);  // its scene.json stretches as it was run
   adopt_stencil(std::move(best_), r_);

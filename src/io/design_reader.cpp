@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <utility>
 
@@ -120,6 +121,26 @@ void read_frame(const JsonObject& top, DesignSpec& s) {
   }
 }
 
+// /resin/darts: how many, only for a darts layout, and no more than leave each dart and each
+// piece of resin between two the minimum feature (around the rim for darts, across the frame for
+// fisheye darts, which need a square sheet).
+void read_darts(const JsonObject& o, DesignSpec& s) {
+  if (o.has("darts") && s.layout.kind == "squares")
+    throw InputError(o.pointer("darts"),
+                     "\"darts\" counts darts: set \"layout\": \"darts\" or "
+                     "\"fisheye_darts\"");
+  s.layout.darts = static_cast<int>(o.integer("darts", s.layout.darts, 3, 64));
+  const double room = (s.layout.kind == "darts" ? std::numbers::pi : 1.0) * s.frame;
+  if (s.layout.kind != "squares" && room / s.layout.darts < 2.0 * s.layout.min_feature)
+    throw InputError(o.pointer("darts"),
+                     "too many darts for this frame: each needs room for a "
+                     "dart and a piece of resin, min_feature wide each");
+  if (s.layout.kind == "fisheye_darts" && s.target.kind == "cap")
+    throw InputError(o.pointer("layout"),
+                     "fisheye darts cross a square sheet; a cap's is a disk "
+                     "(\"darts\" make domes)");
+}
+
 // /resin: the material, its face, the stencil's cell and minimum feature.
 void read_resin(const JsonObject& top, DesignSpec& s) {
   if (!top.has("resin")) return;
@@ -140,7 +161,7 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
   if (s.layout.cell > 0.5 * s.frame)
     throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
   s.layout.kind = o.string("layout", "squares", {"squares", "darts", "fisheye_darts"});
-  s.layout.darts = static_cast<int>(o.integer("darts", s.layout.darts, 3, 64));
+  read_darts(o, s);
   if (s.layout.kind != "squares" && s.resin_side == "convex")
     throw InputError(o.pointer("resin_side"),
                      "darts are one piece of resin, on one face: \"convex\" lays separate pieces "

@@ -20,7 +20,10 @@ namespace membra {
 struct DartProfile {
   int rays = 0;
   std::vector<std::vector<double>> s, deficit;  // per ray, per sample: m, and the deficit
-  double mean_radius = 0.0;                     // m, the rays' geodesic length, averaged
+  // m: the target's half-width measured along its surface (each ray's length along it, scaled
+  // from where the ray leaves the footprint to the footprint's inscribed half-width; averaged).
+  // A frame of twice this makes the darts' form at the target's size.
+  double radius = 0.0;
 
   // The deficit on ray direction `theta` (radians) at `u` (0..1) of that ray's geodesic length.
   double at(double theta, double u) const;
@@ -53,8 +56,9 @@ struct RowProfile {
   std::vector<double> v, share;  // across, m from the centre, and the latex share L asks there
 };
 // The rows' lengths from the target's Gaussian curvature averaged along each row (angle defects
-// over areas, in an odd number of bins across, the middle one on the centre): L'' = -K L from L = 1, L' = 0 at the centre; the latex share of a
-// row is 1 - L / L_max (the longest rows are all resin), before the scale and the shrink.
+// over areas, in an odd number of bins across, the middle one on the centre): L'' = -K L from L =
+// 1, L' = 0 at the centre; the latex share of a row is 1 - L / L_max (the longest rows are all
+// resin), before the scale and the shrink.
 RowProfile row_profile(const TargetSurface& target, int axis, int bins = 25);
 // Lenses at `darts` positions along the axis, each as wide at v as its pitch times the scale
 // times the share there over 1 - 1/lambda (lambda: the stretch along the axis); narrower than
