@@ -50,7 +50,7 @@ int cmd_design(const DesignArgs& args) {
     }
     char scale[48] = "", darts[24] = "";
     if (it.scale != 1.0) std::snprintf(scale, sizeof scale, "  densities x%.2f", it.scale);
-    if (spec.layout.kind != "squares")  // darts: their width over what the target's metric asks
+    if (spec.layout.has_darts())  // their width over what the target's metric asks
       std::snprintf(darts, sizeof darts, "  darts x%.2f", it.parameters.darts);
     if (spec.search_stretch) {  // the stretch this stencil was simulated at
       const Vec2 l = stretched_lambda(spec.lambda, it.parameters.stretch);

@@ -100,7 +100,7 @@ DesignVerdict design_verdict(const DesignResult& r) {
          "shrink in the plane does not make and a coat on one face does: try \"resin\": "
          "{\"bilayer\": true} with the frame stretched across its ridges (and \"resin_side\": "
          "\"convex\" where it bends both ways)";
-  } else if (v.grade != "meets_goal" && r.spec.layout.kind != "squares") {
+  } else if (v.grade != "meets_goal" && r.spec.layout.has_darts()) {
     s << "; darts follow the target's metric alone: try another number of darts, a finer sheet, "
          "or a frame as wide as the target measured along its surface";
   } else if (const int kind =

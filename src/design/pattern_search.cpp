@@ -41,7 +41,7 @@ class Search {
   }
 
   // Darts of either kind: their scale is the search's parameter.
-  bool darts() const { return spec_.layout.kind != "squares"; }
+  bool darts() const { return spec_.layout.has_darts(); }
 
   bool out_of_budget() const { return n_ >= spec_.evaluations || clock_.seconds() >= spec_.budget; }
   int evaluations() const { return n_; }

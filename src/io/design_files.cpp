@@ -68,7 +68,7 @@ void add_adjoint(const DesignResult& d, nlohmann::json& a) {
 nlohmann::json make_design_report(const DesignResult& d) {
   nlohmann::json report = make_report(d.scene, d.run);
   nlohmann::json iterations = nlohmann::json::array();
-  const bool darts = d.spec.layout.kind != "squares";
+  const bool darts = d.spec.layout.has_darts();
   for (const DesignIteration& it : d.history) iterations.push_back(iteration(it, darts));
   const DesignVerdict verdict = design_verdict(d);
   report["design"] = {

@@ -125,13 +125,13 @@ void read_frame(const JsonObject& top, DesignSpec& s) {
 // piece of resin between two the minimum feature (around the rim for darts, across the frame for
 // fisheye darts, which need a square sheet).
 void read_darts(const JsonObject& o, DesignSpec& s) {
-  if (o.has("darts") && s.layout.kind == "squares")
+  if (o.has("darts") && !s.layout.has_darts())
     throw InputError(o.pointer("darts"),
                      "\"darts\" counts darts: set \"layout\": \"darts\" or "
                      "\"fisheye_darts\"");
   s.layout.darts = static_cast<int>(o.integer("darts", s.layout.darts, 3, 64));
   const double room = (s.layout.kind == "darts" ? std::numbers::pi : 1.0) * s.frame;
-  if (s.layout.kind != "squares" && room / s.layout.darts < 2.0 * s.layout.min_feature)
+  if (s.layout.has_darts() && room / s.layout.darts < 2.0 * s.layout.min_feature)
     throw InputError(o.pointer("darts"),
                      "too many darts for this frame: each needs room for a "
                      "dart and a piece of resin, min_feature wide each");
@@ -162,7 +162,7 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
     throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
   s.layout.kind = o.string("layout", "squares", {"squares", "darts", "fisheye_darts"});
   read_darts(o, s);
-  if (s.layout.kind != "squares" && s.resin_side == "convex")
+  if (s.layout.has_darts() && s.resin_side == "convex")
     throw InputError(o.pointer("resin_side"),
                      "darts are one piece of resin, on one face: \"convex\" lays separate pieces "
                      "on either face (use \"layout\": \"squares\")");
@@ -192,7 +192,7 @@ void read_design_settings(const JsonObject& top, DesignSpec& s) {
     throw InputError("/resin/bilayer",
                      "the adjoint method does not place a coat on one face yet: use "
                      "\"method\": \"pattern_search\" for a bilayer");
-  if (s.method == "adjoint" && s.layout.kind != "squares")
+  if (s.method == "adjoint" && s.layout.has_darts())
     throw InputError("/resin/layout",
                      "the adjoint method lays out squares: use \"method\": \"pattern_search\" "
                      "for darts");

@@ -20,6 +20,8 @@ struct StencilLayout {
   // latex, for domes: dart_layout.hpp), and how many darts.
   std::string kind = "squares";
   int darts = 6;
+  // Darts of either kind (one piece of resin whose darts' scale a search moves).
+  bool has_darts() const { return kind != "squares"; }
 };
 
 // One piece of a laid-out stencil: a rectangle of its cell's shape, centred in the cell.
