@@ -37,8 +37,7 @@ void note_reach(const MetricStart& start, DesignResult& r) {
                                : "more shrink than the latex gives there (more pre-stretch, or "
                                  "a larger target)")
       << ".";
-  if (!r.message.empty()) r.message += ' ';
-  r.message += why.str();
+  r.add_message(why.str());
 }
 
 DesignIteration density_iterate(const DensityIterate& it, double diameter,
@@ -211,12 +210,9 @@ void lay_out_and_simulate(const DesignSpec& spec, const Scene& scene, DesignResu
                        "the designed stencil could not be simulated: " + t.note);
   }
   refine_pieces(spec, scene, *best, best_trial, r, clock, deadline, progress);
-  if (!best->note.empty()) {
-    if (!r.message.empty()) r.message += ' ';
-    r.message += "The stencil's simulation ";
-    r.message += best->note;
-    r.message += ": the form shown is its last state, not a prediction.";
-  }
+  if (!best->note.empty())
+    r.add_message("The stencil's simulation " + best->note +
+                  ": the form shown is its last state, not a prediction.");
   adopt_stencil(std::move(*best), r);
 }
 

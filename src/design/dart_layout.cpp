@@ -23,6 +23,15 @@ double reach(const Vec2& half, bool disk, double theta) {
                   half.y() / std::max(std::abs(std::sin(theta)), 1e-12));
 }
 
+// y at t, linear between the samples (x ascending), held at the ends.
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double t) {
+  t = std::clamp(t, x.front(), x.back());
+  const auto it = std::lower_bound(x.begin(), x.end(), t);
+  const size_t i = std::clamp<size_t>(static_cast<size_t>(it - x.begin()), 1, x.size() - 1);
+  const double w = (t - x[i - 1]) / std::max(x[i] - x[i - 1], 1e-15);
+  return (1.0 - w) * y[i - 1] + w * y[i];
+}
+
 // Through mm, as a scene file holds it, so that the stencil simulated is the one written.
 Vec2 polar(const Vec2& centre, double r, double theta) {
   const Vec2 p = centre + r * Vec2(std::cos(theta), std::sin(theta));
@@ -79,14 +88,7 @@ double DartProfile::at(double theta, double u) const {
   if (t < 0.0) t += 2.0 * kPi;
   const int k = static_cast<int>(std::lround(t / (2.0 * kPi) * rays)) % rays;
   const std::vector<double>& sk = s[static_cast<size_t>(k)];
-  const std::vector<double>& dk = deficit[static_cast<size_t>(k)];
-  const double target_s = std::clamp(u, 0.0, 1.0) * sk.back();
-  const auto it = std::lower_bound(sk.begin(), sk.end(), target_s);
-  if (it == sk.begin()) return dk.front();
-  if (it == sk.end()) return dk.back();
-  const size_t i = static_cast<size_t>(it - sk.begin());
-  const double w = (target_s - sk[i - 1]) / std::max(sk[i] - sk[i - 1], 1e-15);
-  return (1.0 - w) * dk[i - 1] + w * dk[i];
+  return interpolate(sk, deficit[static_cast<size_t>(k)], std::clamp(u, 0.0, 1.0) * sk.back());
 }
 
 DartProfile dart_profile(const TargetSurface& target, int rays, int samples) {
@@ -230,12 +232,7 @@ Stencil layout_fisheye_darts(const RowProfile& profile, const Box2& frame, const
   // The target's footprint across laid over the frame's, centre on centre.
   const double reach = profile.v.back() + 0.5 * (profile.v[1] - profile.v[0]);  // half-width
   const auto share = [&](double v) {  // linear between bin centres, held beyond the last
-    const double t = std::clamp(v / half(b) * reach, profile.v.front(), profile.v.back());
-    const auto it = std::lower_bound(profile.v.begin(), profile.v.end(), t);
-    const size_t i =
-        std::clamp<size_t>(static_cast<size_t>(it - profile.v.begin()), 1, profile.v.size() - 1);
-    const double w = (t - profile.v[i - 1]) / (profile.v[i] - profile.v[i - 1]);
-    return (1.0 - w) * profile.share[i - 1] + w * profile.share[i];
+    return interpolate(profile.v, profile.share, v / half(b) * reach);
   };
   std::vector<PatternSpec> lenses;
   constexpr int samples = 97;

@@ -33,7 +33,7 @@ class Search {
     if (spec_.layout.kind == "fisheye_darts") {
       rows_ = row_profile(r.target, stretch_axis());
       if (spec_.lambda.minCoeff() > 1.0)
-        note(
+        r_.add_message(
             "Fisheye darts assume the latex stretched along one axis: with both stretched, the "
             "lenses shorten the columns too, which their widths do not allow for (use a "
             "\"lambda\" of 1 across).");
@@ -67,9 +67,6 @@ class Search {
   bool record(const DensityParameters& d, Evaluation&& e, double seconds);
   Stencil make_stencil(const DensityParameters& d) const;
   void note_frame_fit();
-  void note(const std::string& text) {
-    r_.message += std::string(r_.message.empty() ? "" : " ") + text;
-  }
 
   const DesignSpec& spec_;
   DesignResult& r_;
@@ -110,7 +107,7 @@ void Search::note_frame_fit() {
     most = std::max(most, mean);
   }
   if (most <= 1e-9)
-    note(
+    r_.add_message(
         "The target's circles are nowhere shorter than on a plane: darts have no width here "
         "(they make domes; a saddle takes \"fisheye_darts\").");
   const double fit = 2.0 * profile_.radius;
@@ -120,7 +117,7 @@ void Search::note_frame_fit() {
                 "Darts keep lengths from the centre: a frame %.0f mm across makes the target at "
                 "its size (this one is %.0f mm).",
                 fit / units::mm, spec_.frame / units::mm);
-  note(text);
+  r_.add_message(text);
 }
 
 Stencil Search::make_stencil(const DensityParameters& d) const {
@@ -160,7 +157,7 @@ void Search::finish() {
                                               (r_.history.empty() ? std::string("no evaluation")
                                                                   : r_.history.back().note));
   if (!best_converged_)
-    note(
+    r_.add_message(
         "No simulation reached equilibrium: the form shown is the last state of the best one, "
         "not a prediction (more iterations, or the static solver).");
   r_.best = best_d_;

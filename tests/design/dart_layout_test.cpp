@@ -13,13 +13,17 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+TargetSurface analytic(const char* kind, double size, double height) {
+  TargetSpec spec;
+  spec.kind = kind;
+  spec.size = size;
+  spec.height = height;
+  return make_target(spec);
+}
+
 // The bundled cap: 160 mm across, 24 mm high, a sphere of radius 145.3 mm.
 TargetSurface cap() {
-  TargetSpec spec;
-  spec.kind = "cap";
-  spec.size = 0.16;
-  spec.height = 0.024;
-  return make_target(spec);
+  return analytic("cap", 0.16, 0.024);
 }
 
 double sphere_radius() {
@@ -112,11 +116,7 @@ TEST(DartLayout, DartsAreAsWideAsTheDeficitAsks) {
 
 // The bundled saddle: z = h (x^2 - y^2) / (s/2)^2, 150 mm square, h = 15 mm.
 TargetSurface saddle() {
-  TargetSpec spec;
-  spec.kind = "saddle";
-  spec.size = 0.15;
-  spec.height = 0.015;
-  return make_target(spec);
+  return analytic("saddle", 0.15, 0.015);
 }
 
 // Rows along x of a saddle must be longer at its edges than through its middle: L'' = -K L with

@@ -51,7 +51,12 @@ struct DesignResult {
   DesignSpec spec;
   TargetSurface target;
   bool reachable = true;
-  std::string message;            // why the target cannot be reached, when it cannot
+  // Why the target cannot be reached, when it cannot, and what else the design has to say
+  // (the CLI's note: line); add_message appends a sentence.
+  std::string message;
+  void add_message(const std::string& sentence) {
+    message += (message.empty() ? "" : " ") + sentence;
+  }
   DensityParameters start, best;  // the start from mechanics, the best found
   Scene scene;                    // the best stencil's scene, as it was run
   Stencil stencil;
