@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -15,12 +16,18 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Where a ray from the centre leaves a footprint or sheet of half-sides `half`: the disk's
-// radius, or the box's side.
-double reach(const Vec2& half, bool disk, double theta) {
-  if (disk) return half.minCoeff();
-  return std::min(half.x() / std::max(std::abs(std::cos(theta)), 1e-12),
-                  half.y() / std::max(std::abs(std::sin(theta)), 1e-12));
+// Where a ray from `from` (relative to the centre) leaves a footprint or sheet of half-sides
+// `half`: on the disk's circle, or on the box's side.
+double reach(const Vec2& half, bool disk, const Vec2& from, double theta) {
+  const Vec2 d(std::cos(theta), std::sin(theta));
+  if (disk) {
+    const double b = from.dot(d), r = half.minCoeff();
+    return -b + std::sqrt(std::max(b * b - from.squaredNorm() + r * r, 0.0));
+  }
+  double t = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 2; ++a)
+    if (std::abs(d(a)) > 1e-12) t = std::min(t, ((d(a) > 0 ? half(a) : -half(a)) - from(a)) / d(a));
+  return std::max(t, 0.0);
 }
 
 // y at t, linear between the samples (x ascending), held at the ends.
@@ -49,22 +56,46 @@ PatternSpec outline(const std::vector<Vec2>& left, const std::vector<Vec2>& righ
   return p;
 }
 
-// One dart around direction `theta`: the wedge from where it is min_feature wide to beyond the
-// frame's corners, as a polygon (empty when it is nowhere that wide).
-PatternSpec dart(const DartProfile& profile, const Box2& frame, bool disk, double theta,
-                 const DartOptions& o) {
-  const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
+// The frame's points for the profiles' centres: the footprint laid over the frame, centre on
+// centre, each axis scaled to fit.
+std::vector<Vec2> frame_centres(const std::vector<DartProfile>& profiles, const Box2& frame) {
+  const Vec2 middle = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
+  std::vector<Vec2> out;
+  for (const DartProfile& p : profiles)
+    out.push_back(middle + p.centre.cwiseProduct(half.cwiseQuotient(p.footprint)));
+  return out;
+}
+
+// Whether frame point q is in centre `own`'s Voronoi cell, `margin` short of its border.
+bool in_cell(const std::vector<Vec2>& centres, size_t own, const Vec2& q, double margin) {
+  for (size_t j = 0; j < centres.size(); ++j) {
+    if (j == own) continue;
+    const Vec2 axis = centres[j] - centres[own];
+    // The signed distance past the bisector, towards centre j.
+    if ((q - 0.5 * (centres[own] + centres[j])).dot(axis) / axis.norm() > -margin) return false;
+  }
+  return true;
+}
+
+// One dart around direction `theta` from centre `own`: the wedge from where it is min_feature
+// wide to beyond the frame's corners (or its cell's border), as a polygon (empty when it is
+// nowhere that wide).
+PatternSpec dart(const std::vector<DartProfile>& profiles, const std::vector<Vec2>& centres,
+                 size_t own, const Box2& frame, bool disk, double theta, const DartOptions& o) {
+  const DartProfile& profile = profiles[own];
+  const Vec2 centre = centres[own], half = 0.5 * (frame.max - frame.min);
+  const Vec2 from = centre - 0.5 * (frame.min + frame.max);
   const double sector = 2.0 * kPi / o.darts, shrink = 1.0 - 1.0 / o.lambda;
-  const double r_end = 1.05 * half.norm();
+  const double r_end = 1.05 * (from.cwiseAbs() + half).norm();
   constexpr int steps = 96, sub = 9;
   std::vector<Vec2> left, right;
   for (int i = 1; i <= steps; ++i) {
     const double r = r_end * i / steps;
-    // The sector's mean deficit at this frame radius (each ray's u is r over its own half-width).
+    // The sector's mean deficit at this frame radius (each ray's u is r over its own reach).
     double deficit = 0.0;
     for (int j = 0; j < sub; ++j) {
       const double t = theta + sector * ((j + 0.5) / sub - 0.5);
-      deficit += profile.at(t, std::min(r / reach(half, disk, t), 1.0)) / sub;
+      deficit += profile.at(t, std::min(r / reach(half, disk, from, t), 1.0)) / sub;
     }
     const double share = std::clamp(o.scale * deficit / shrink, 0.0, 1.0);
     const double arc = r * sector;  // the sector's width at r
@@ -74,8 +105,14 @@ PatternSpec dart(const DartProfile& profile, const Box2& frame, bool disk, doubl
       continue;
     }
     const double half_angle = 0.5 * width / r;
-    left.push_back(polar(centre, r, theta - half_angle));
-    right.push_back(polar(centre, r, theta + half_angle));
+    const Vec2 l = polar(centre, r, theta - half_angle), rt = polar(centre, r, theta + half_angle);
+    if (!in_cell(centres, own, l, 0.5 * o.min_feature) ||
+        !in_cell(centres, own, rt, 0.5 * o.min_feature)) {
+      if (!left.empty()) break;  // the next centre's darts take over
+      continue;
+    }
+    left.push_back(l);
+    right.push_back(rt);
   }
   return outline(left, right);
 }
@@ -94,18 +131,26 @@ double DartProfile::at(double theta, double u) const {
 DartProfile dart_profile(const TargetSurface& target, int rays, int samples) {
   const Vec2 lo = target.x.topRows<2>().rowwise().minCoeff();
   const Vec2 hi = target.x.topRows<2>().rowwise().maxCoeff();
-  const Vec2 c = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  return dart_profile(target, 0.5 * (lo + hi), rays, samples);
+}
+
+DartProfile dart_profile(const TargetSurface& target, const Vec2& c, int rays, int samples) {
+  const Vec2 lo = target.x.topRows<2>().rowwise().minCoeff();
+  const Vec2 hi = target.x.topRows<2>().rowwise().maxCoeff();
+  const Vec2 half = 0.5 * (hi - lo), from = c - 0.5 * (lo + hi);
   const auto point = [&](double rho, double theta) {
     const Vec2 q = c + rho * Vec2(std::cos(theta), std::sin(theta));
     return Vec3(q.x(), q.y(), target_height(target, q));
   };
   DartProfile p;
+  p.centre = from;
+  p.footprint = half;
   p.rays = rays;
   p.s.assign(static_cast<size_t>(rays), {});
   p.deficit.assign(static_cast<size_t>(rays), {});
   const double dtheta = 1e-3;
   for (int k = 0; k < rays; ++k) {
-    const double theta = 2.0 * kPi * k / rays, length = reach(half, target.disk, theta);
+    const double theta = 2.0 * kPi * k / rays, length = reach(half, target.disk, from, theta);
     auto& s = p.s[static_cast<size_t>(k)];
     auto& d = p.deficit[static_cast<size_t>(k)];
     s.push_back(0.0);
@@ -170,13 +215,16 @@ Stencil sheet_less(std::vector<PatternSpec> holes, const Box2& frame, bool disk)
 
 }  // namespace
 
-Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
+Stencil layout_darts(const std::vector<DartProfile>& profiles, const Box2& frame, bool disk,
                      const DartOptions& options) {
+  const std::vector<Vec2> centres = frame_centres(profiles, frame);
   std::vector<PatternSpec> darts;
   // Centred half a sector from the x axis: for an even count the darts are symmetric about
   // both axes (six darts: two on the y axis, none on the x axis).
-  for (int k = 0; k < options.darts; ++k)
-    darts.push_back(dart(profile, frame, disk, 2.0 * kPi * (k + 0.5) / options.darts, options));
+  for (size_t c = 0; c < profiles.size(); ++c)
+    for (int k = 0; k < options.darts; ++k)
+      darts.push_back(
+          dart(profiles, centres, c, frame, disk, 2.0 * kPi * (k + 0.5) / options.darts, options));
   return sheet_less(std::move(darts), frame, disk);
 }
 

@@ -29,7 +29,7 @@ class Search {
         r_(r),
         progress_(progress),
         frame_{Vec2::Zero(), Vec2(spec.frame, spec.frame)} {
-    if (spec_.layout.kind == "darts") note_frame_fit();
+    if (spec_.layout.kind == "darts") make_dart_profiles();
     if (spec_.layout.kind == "fisheye_darts") {
       rows_ = row_profile(r.target, stretch_axis());
       if (spec_.lambda.minCoeff() > 1.0)
@@ -66,6 +66,7 @@ class Search {
  private:
   bool record(const DensityParameters& d, Evaluation&& e, double seconds);
   Stencil make_stencil(const DensityParameters& d) const;
+  void make_dart_profiles();
   void note_frame_fit();
 
   const DesignSpec& spec_;
@@ -88,16 +89,39 @@ class Search {
     return out;
   }
   std::vector<Tried> tried_;
-  DartProfile profile_;  // darts: the target's deficit
-  RowProfile rows_;      // fisheye darts: the rows' latex shares
+  std::vector<DartProfile> profiles_;  // darts: the target's deficit about each centre
+  RowProfile rows_;                    // fisheye darts: the rows' latex shares
   int stretch_axis() const { return spec_.lambda.x() >= spec_.lambda.y() ? 0 : 1; }
 };
+
+// The target's deficit about each of the darts' centres. One centre, the footprint's, keeps
+// lengths along the spokes from it, so its frame must fit the target (note_frame_fit); several
+// must lie inside the footprint.
+void Search::make_dart_profiles() {
+  if (spec_.layout.centres.empty()) {
+    profiles_ = {dart_profile(r_.target)};
+    note_frame_fit();
+    return;
+  }
+  const Vec2 lo = r_.target.x.topRows<2>().rowwise().minCoeff();
+  const Vec2 hi = r_.target.x.topRows<2>().rowwise().maxCoeff();
+  for (size_t i = 0; i < spec_.layout.centres.size(); ++i) {
+    const Vec2 c = spec_.layout.centres[i] + 0.5 * (lo + hi);
+    const bool inside = r_.target.disk
+                            ? (c - 0.5 * (lo + hi)).norm() < 0.5 * (hi - lo).minCoeff()
+                            : (c.array() > lo.array()).all() && (c.array() < hi.array()).all();
+    if (!inside)
+      throw InputError(spec_.file.string() + ": /resin/dart_centres/" + std::to_string(i),
+                       "outside the target's footprint (mm from its centre)");
+    profiles_.push_back(dart_profile(r_.target, c));
+  }
+}
 
 // Darts keep lengths along the spokes: a frame as wide as the target measured along its surface
 // makes the form at the target's size. Another frame makes it larger or smaller, which the
 // alignment counts as error, so the design says which frame fits.
 void Search::note_frame_fit() {
-  profile_ = dart_profile(r_.target);
+  const DartProfile& profile_ = profiles_.front();
   // The darts' width follows the circles' deficit: a target whose circles are, all round, nowhere
   // shorter than on a plane (a saddle) gets none.
   double most = -1.0;
@@ -129,7 +153,7 @@ Stencil Search::make_stencil(const DensityParameters& d) const {
         rows_, frame_, {spec_.layout.darts, d.darts, lambda(rows_.axis), spec_.layout.min_feature});
   // Darts shrink circles whichever way they run: the stretch's geometric mean sets by how much.
   return layout_darts(
-      profile_, frame_, r_.target.disk,
+      profiles_, frame_, r_.target.disk,
       {spec_.layout.darts, d.darts, std::sqrt(lambda.prod()), spec_.layout.min_feature});
 }
 

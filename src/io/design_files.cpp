@@ -102,6 +102,12 @@ nlohmann::json make_design_report(const DesignResult& d) {
       {"seconds", d.seconds},
       {"iterations", iterations}};
   if (d.method == "adjoint") add_adjoint(d, report["design"]);
+  if (!d.spec.layout.centres.empty()) {
+    nlohmann::json centres = nlohmann::json::array();
+    for (const Vec2& c : d.spec.layout.centres)
+      centres.push_back({c.x() / units::mm, c.y() / units::mm});
+    report["design"]["stencil"]["dart_centres_mm"] = centres;
+  }
   return report;
 }
 

@@ -13,6 +13,7 @@
 #include "membra/geometry/square_grid.hpp"
 #include "membra/io/json_reader.hpp"
 #include "membra/io/obj.hpp"
+#include "membra/io/pattern_reader.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/io/scene_writer.hpp"
 
@@ -135,6 +136,21 @@ void read_darts(const JsonObject& o, DesignSpec& s) {
     throw InputError(o.pointer("darts"),
                      "too many darts for this frame: each needs room for a "
                      "dart and a piece of resin, min_feature wide each");
+  if (o.has("dart_centres")) {
+    if (s.layout.kind != "darts")
+      throw InputError(o.pointer("dart_centres"),
+                       "\"dart_centres\" place darts about several points: set \"layout\": "
+                       "\"darts\"");
+    s.layout.centres = read_points(o, "dart_centres", 1);
+    if (s.layout.centres.size() > 16)
+      throw InputError(o.pointer("dart_centres"), "at most 16 centres");
+    for (size_t i = 0; i < s.layout.centres.size(); ++i)
+      for (size_t j = 0; j < i; ++j)
+        if ((s.layout.centres[i] - s.layout.centres[j]).norm() < 4.0 * s.layout.min_feature)
+          throw InputError(o.pointer("dart_centres") + "/" + std::to_string(i),
+                           "closer to centre " + std::to_string(j) +
+                               " than four times min_feature: their darts would have no room");
+  }
   if (s.layout.kind == "fisheye_darts" && s.target.kind == "cap")
     throw InputError(o.pointer("layout"),
                      "fisheye darts cross a square sheet; a cap's is a disk "
@@ -144,8 +160,8 @@ void read_darts(const JsonObject& o, DesignSpec& s) {
 // /resin: the material, its face, the stencil's cell and minimum feature.
 void read_resin(const JsonObject& top, DesignSpec& s) {
   if (!top.has("resin")) return;
-  const JsonObject o = top.object(
-      "resin", {"material", "min_feature", "cell", "resin_side", "bilayer", "layout", "darts"});
+  const JsonObject o = top.object("resin", {"material", "min_feature", "cell", "resin_side",
+                                            "bilayer", "layout", "darts", "dart_centres"});
   s.resin = o.string("material", s.resin);
   s.resin_side = o.string("resin_side", "top", {"top", "bottom", "convex"});
   s.bilayer = o.boolean("bilayer", false);

@@ -22,6 +22,8 @@ const std::vector<std::string_view> kPolygonKeys = {"points"};
 const std::vector<std::string_view> kPatternImageKeys = {"file", "origin", "size", "threshold",
                                                          "invert"};
 
+}  // namespace
+
 std::vector<Vec2> read_points(const JsonObject& o, std::string_view key, size_t min_count) {
   const auto& arr = o.at(key);
   if (!arr.is_array() || arr.size() < min_count)
@@ -36,6 +38,8 @@ std::vector<Vec2> read_points(const JsonObject& o, std::string_view key, size_t 
   }
   return pts;
 }
+
+namespace {
 
 Vec2 read_vec2(const JsonObject& o, std::string_view key, Bounds b = {}) {
   const auto v = o.numbers(key, 2, b);

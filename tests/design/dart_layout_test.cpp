@@ -70,6 +70,67 @@ TEST(DartLayout, ASquareDomesDeficitReachesItsEdges) {
     }
 }
 
+// The same paraboloid with its apex 30 mm along x, its profile taken about the apex: each ray
+// runs to the footprint's edge from there (45, 75 and 105 mm along x, y and -x, less the rim's
+// margin) and the deficit is the closed form's on each.
+TEST(DartLayout, AnOffCentreProfileRunsToTheFootprintsEdge) {
+  TargetSpec spec;
+  spec.kind = "height_field";
+  spec.size = 0.15;
+  spec.formula = "-0.002*((x-30)^2+y^2)";
+  const TargetSurface t = make_target(spec);
+  const DartProfile p = dart_profile(t, Vec2(0.03, 0.0));
+  EXPECT_NEAR(p.centre.x(), 0.03, 1e-12);
+  const double k = 4.0;
+  const auto s = [&](double rho) {
+    return 0.5 * (rho * std::sqrt(1.0 + k * k * rho * rho) + std::asinh(k * rho) / k);
+  };
+  for (const auto& [theta, edge] : {std::pair{0.0, 0.045}, {0.5 * kPi, 0.075}, {kPi, 0.105}}) {
+    const double rho_end = edge * (1.0 - 4e-3);
+    EXPECT_NEAR(p.s[static_cast<size_t>(std::lround(theta / (2.0 * kPi) * p.rays))].back(),
+                s(rho_end), 2e-3 * s(rho_end))
+        << theta;
+    for (double u : {0.5, 1.0}) {
+      double lo = 0.0, hi = rho_end;
+      for (int i = 0; i < 60; ++i)
+        (s(0.5 * (lo + hi)) < u * s(rho_end) ? lo : hi) = 0.5 * (lo + hi);
+      const double rho = 0.5 * (lo + hi);
+      EXPECT_NEAR(p.at(theta, u), 1.0 - rho / s(rho), 1e-3) << theta << " " << u;
+    }
+  }
+}
+
+// Two domes side by side, darts about each apex: each centre's darts stay on its side of the
+// bisector, min_feature / 2 short of it, and each centre gets some.
+TEST(DartLayout, EachCentresDartsStayInItsCell) {
+  TargetSpec spec;
+  spec.kind = "height_field";
+  spec.size = 0.15;
+  spec.formula = "20*exp(-((x-40)^2+y^2)/1800) + 20*exp(-((x+40)^2+y^2)/1800)";
+  const TargetSurface t = make_target(spec);
+  const std::vector<DartProfile> p = {dart_profile(t, Vec2(-0.04, 0.0)),
+                                      dart_profile(t, Vec2(0.04, 0.0))};
+  DartOptions o;
+  o.darts = 4;
+  o.lambda = 1.1;
+  const Box2 frame{Vec2::Zero(), Vec2(0.155, 0.155)};
+  const Stencil st = layout_darts(p, frame, false, o);
+  ASSERT_EQ(st.spec.kind, PatternSpec::Kind::difference);
+  int left = 0, right = 0;
+  const double middle = 0.0775, margin = 0.5 * o.min_feature;
+  for (size_t i = 1; i < st.spec.parts.size(); ++i) {
+    const auto& pts = st.spec.parts[i].points;
+    const bool is_left = pts.front().x() < middle;
+    (is_left ? left : right) += 1;
+    for (const Vec2& q : pts)
+      EXPECT_TRUE(is_left ? q.x() <= middle - margin + 1e-9 : q.x() >= middle + margin - 1e-9)
+          << q.transpose();
+  }
+  EXPECT_GT(left, 0);
+  EXPECT_GT(right, 0);
+  EXPECT_LT(st.resin_share, 0.95);
+}
+
 // A plane asks for no shrink: no darts, the whole sheet is resin.
 TEST(DartLayout, APlaneGetsNoDarts) {
   TargetSpec spec;
@@ -79,7 +140,7 @@ TEST(DartLayout, APlaneGetsNoDarts) {
   const TargetSurface plane = make_target(spec);
   const DartProfile p = dart_profile(plane);
   for (double u : {0.3, 1.0}) EXPECT_NEAR(p.at(0.5, u), 0.0, 1e-9);
-  const Stencil s = layout_darts(p, {Vec2::Zero(), Vec2(0.15, 0.15)}, false, {});
+  const Stencil s = layout_darts({p}, {Vec2::Zero(), Vec2(0.15, 0.15)}, false, {});
   EXPECT_DOUBLE_EQ(s.resin_share, 1.0);
 }
 
@@ -93,7 +154,7 @@ TEST(DartLayout, DartsAreAsWideAsTheDeficitAsks) {
   o.darts = 6;
   o.scale = 1.2;
   o.lambda = 1.15;
-  const Stencil s = layout_darts(p, frame, true, o);
+  const Stencil s = layout_darts({p}, frame, true, o);
   const Vec2 c(0.085, 0.085);
   const auto latex_share = [&](double r) {
     constexpr int n = 3600;

@@ -18,6 +18,8 @@ namespace membra {
 // distance s along the ray in direction theta, 1 - |dX/dtheta| / s (0 on a plane, s^2 / 6R^2 near
 // the pole of a sphere of radius R; negative where circles are longer than on a plane).
 struct DartProfile {
+  Vec2 centre = Vec2::Zero();     // m, target coordinates: where the rays start
+  Vec2 footprint = Vec2::Zero();  // m, the target footprint's half-sides (laid over the frame's)
   int rays = 0;
   std::vector<std::vector<double>> s, deficit;  // per ray, per sample: m, and the deficit
   // m: the target's half-width measured along its surface (each ray's length along it, scaled
@@ -29,6 +31,9 @@ struct DartProfile {
   double at(double theta, double u) const;
 };
 DartProfile dart_profile(const TargetSurface& target, int rays = 72, int samples = 48);
+// The same from another centre (inside the footprint): each ray runs to the footprint's edge.
+DartProfile dart_profile(const TargetSurface& target, const Vec2& centre, int rays = 72,
+                         int samples = 48);
 
 struct DartOptions {
   int darts = 6;
@@ -38,11 +43,13 @@ struct DartOptions {
 };
 
 // The stencil on `frame` (the target's footprint laid over it, centre on centre, the frame's
-// half-width at the end of each ray): resin over the whole sheet (a disk on `disk` targets)
-// less `darts` wedges, each as wide at frame radius r as the mean deficit of its sector there
-// asks, times the scale, over 1 - 1/lambda. Where the target asks for no shrink (deficit <= 0)
-// a dart has no width.
-Stencil layout_darts(const DartProfile& profile, const Box2& frame, bool disk,
+// edge at the end of each ray): resin over the whole sheet (a disk on `disk` targets) less
+// `darts` wedges about each profile's centre, each as wide at frame radius r as the mean deficit
+// of its sector there asks, times the scale, over 1 - 1/lambda. Where the target asks for no
+// shrink (deficit <= 0) a dart has no width. With several centres (a bump here, a hollow there),
+// each centre's darts stay in the part of the sheet nearer to it than to any other (a Voronoi
+// cell), min_feature / 2 short of its border.
+Stencil layout_darts(const std::vector<DartProfile>& profiles, const Box2& frame, bool disk,
                      const DartOptions& options);
 
 // Fisheye darts (`"layout": "fisheye_darts"`): double-pointed lenses of bare latex lying across

@@ -20,6 +20,8 @@ struct StencilLayout {
   // latex, for domes: dart_layout.hpp), and how many darts.
   std::string kind = "squares";
   int darts = 6;
+  // Darts: their centres (m, target coordinates from the footprint's centre); empty: the centre.
+  std::vector<Vec2> centres = {};
   // Darts of either kind (one piece of resin whose darts' scale a search moves).
   bool has_darts() const { return kind != "squares"; }
 };

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "membra/io/json_reader.hpp"
 #include "membra/model/pattern.hpp"
 #include "membra/model/pattern_spec.hpp"
 
@@ -17,6 +18,10 @@ namespace membra {
 // to `base_dir`. Throws InputError naming the JSON pointer of a bad value.
 PatternSpec read_pattern_spec(const nlohmann::json& j, const std::string& pointer,
                               const std::filesystem::path& base_dir);
+
+// The array of [x, y] points (mm) at `key`, at least `min_count`, in m. Throws InputError
+// naming the JSON pointer of a bad value.
+std::vector<Vec2> read_points(const JsonObject& o, std::string_view key, size_t min_count);
 
 // Keys of each pattern kind, for the schema test.
 std::map<std::string, std::vector<std::string>> pattern_known_keys();
