@@ -1,6 +1,7 @@
 #include "membra/design/dart_layout.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -176,27 +177,67 @@ DartProfile dart_profile(const TargetSurface& target, const Vec2& c, int rays, i
 
 namespace {
 
-// The sheet in resin, less `holes` of bare latex (which leave it in one piece: each dart and
-// lens ends inside the sheet or at its rim, never across it).
-Stencil sheet_less(std::vector<PatternSpec> holes, const Box2& frame, bool disk) {
+// A polygon from its corners, through mm as a scene file holds them.
+PatternSpec box_spec(const Vec2& lo, const Vec2& hi) {
+  PatternSpec p;
+  p.kind = PatternSpec::Kind::polygon;
+  p.points = {lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())};
+  for (Vec2& q : p.points) q = (q / units::mm) * units::mm;
+  return p;
+}
+
+// The sheet's resin on each face (top, bottom) before the holes: the whole sheet on the top
+// face, or with `face`, square cells of about `cell` on the face each names (empty when none).
+std::array<PatternSpec, 2> faces_of(const Box2& frame, bool disk, const DartOptions& o) {
   const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
   // The sheet, a little larger so that its edge particles are inside.
-  PatternSpec sheet;
-  if (disk) {
-    sheet = circle_spec(centre, 1.02 * half.minCoeff());
-  } else {
-    sheet.kind = PatternSpec::Kind::polygon;
-    const Vec2 h = 1.02 * half;
-    sheet.points = {centre - h, centre + Vec2(h.x(), -h.y()), centre + h,
-                    centre + Vec2(-h.x(), h.y())};
-  }
-  std::vector<PatternSpec> parts = {sheet};
-  for (PatternSpec& h : holes)
-    if (!h.points.empty()) parts.push_back(std::move(h));
+  const Vec2 lo = centre - 1.02 * half, hi = centre + 1.02 * half;
+  const PatternSpec sheet = disk ? circle_spec(centre, 1.02 * half.minCoeff()) : box_spec(lo, hi);
+  if (!o.face) return {sheet, {}};
+  std::array<std::vector<PatternSpec>, 2> cells;
+  const Vec2 size = frame.max - frame.min;
+  const int nx = std::max(1, static_cast<int>(std::lround(size.x() / o.cell)));
+  const int ny = std::max(1, static_cast<int>(std::lround(size.y() / o.cell)));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const Vec2 a = frame.min + size.cwiseProduct(Vec2(double(i) / nx, double(j) / ny));
+      const Vec2 b = frame.min + size.cwiseProduct(Vec2(double(i + 1) / nx, double(j + 1) / ny));
+      // Cells on the rim reach as far as the sheet's outline above.
+      const Vec2 c0(i == 0 ? lo.x() : a.x(), j == 0 ? lo.y() : a.y());
+      const Vec2 c1(i == nx - 1 ? hi.x() : b.x(), j == ny - 1 ? hi.y() : b.y());
+      cells[o.face(0.5 * (a + b)) < 0 ? 1 : 0].push_back(box_spec(c0, c1));
+    }
+  // All on one face: the whole sheet there.
+  if (cells[1].empty()) return {sheet, {}};
+  if (cells[0].empty()) return {PatternSpec{}, sheet};
+  return {union_spec(std::move(cells[0])), union_spec(std::move(cells[1]))};
+}
+
+// The sheet in resin, less `holes` of bare latex (which leave it in one piece: each dart and
+// lens ends inside the sheet or at its rim, never across it); with `o.face`, on two faces.
+Stencil sheet_less(const std::vector<PatternSpec>& holes, const Box2& frame, bool disk,
+                   const DartOptions& o) {
+  const Vec2 centre = 0.5 * (frame.min + frame.max), half = 0.5 * (frame.max - frame.min);
+  const std::array<PatternSpec, 2> base = faces_of(frame, disk, o);
+  const auto less = [&](const PatternSpec& b) {
+    std::vector<PatternSpec> parts = {b};
+    for (const PatternSpec& h : holes)
+      if (!h.points.empty()) parts.push_back(h);
+    return parts.size() == 1 ? b : difference_spec(std::move(parts));
+  };
+  const auto empty = [](const PatternSpec& p) {
+    return p.kind == PatternSpec::Kind::polygon && p.points.empty();
+  };
   Stencil out;
-  out.pieces = 1;
-  out.spec = parts.size() == 1 ? sheet : difference_spec(std::move(parts));
-  out.pattern = make_pattern(out.spec, frame.max - frame.min);
+  if (!empty(base[0])) {
+    out.spec = less(base[0]);
+    out.pattern = make_pattern(out.spec, frame.max - frame.min);
+  }
+  if (!empty(base[1])) {
+    out.spec_bottom = less(base[1]);
+    out.pattern_bottom = make_pattern(out.spec_bottom, frame.max - frame.min);
+  }
+  out.pieces = (out.pattern ? 1 : 0) + (out.pattern_bottom ? 1 : 0);
   // The resin's share of the sheet, counted on a fine grid.
   constexpr int n = 200;
   int inside = 0, resin = 0;
@@ -206,7 +247,10 @@ Stencil sheet_less(std::vector<PatternSpec> holes, const Box2& frame, bool disk)
           frame.min + (frame.max - frame.min).cwiseProduct(Vec2((i + 0.5) / n, (j + 0.5) / n));
       if (disk && (q - centre).norm() > half.minCoeff()) continue;
       ++inside;
-      resin += out.pattern->contains(q) ? 1 : 0;
+      resin += (out.pattern && out.pattern->contains(q)) ||
+                       (out.pattern_bottom && out.pattern_bottom->contains(q))
+                   ? 1
+                   : 0;
     }
   out.outline_area = (frame.max - frame.min).prod() * inside / (n * n);
   out.resin_share = inside > 0 ? static_cast<double>(resin) / inside : 0.0;
@@ -225,7 +269,7 @@ Stencil layout_darts(const std::vector<DartProfile>& profiles, const Box2& frame
     for (int k = 0; k < options.darts; ++k)
       darts.push_back(
           dart(profiles, centres, c, frame, disk, 2.0 * kPi * (k + 0.5) / options.darts, options));
-  return sheet_less(std::move(darts), frame, disk);
+  return sheet_less(darts, frame, disk, options);
 }
 
 RowProfile row_profile(const TargetSurface& target, int axis, int bins) {
@@ -310,7 +354,7 @@ Stencil layout_fisheye_darts(const RowProfile& profile, const Box2& frame, const
     }
     close();
   }
-  return sheet_less(std::move(lenses), frame, false);
+  return sheet_less(lenses, frame, false, o);
 }
 
 }  // namespace membra

@@ -103,6 +103,10 @@ DesignVerdict design_verdict(const DesignResult& r) {
   } else if (v.grade != "meets_goal" && r.spec.layout.has_darts()) {
     s << "; darts follow the target's metric alone: try another number of darts, a finer sheet, "
          "or a frame as wide as the target measured along its surface";
+    // A coat chooses which way each part bulges and bends where the metric does not.
+    if (!r.spec.bilayer)
+      s << "; where it bulges both ways or bends, cut them through a coat: \"bilayer\": true, "
+           "\"resin_side\": \"convex\"";
   } else if (const int kind =
                  v.grade != "meets_goal" && !r.spec.bilayer ? dome_or_saddle(r.target) : 0;
              kind > 0) {

@@ -13,6 +13,7 @@
 #include "membra/core/units.hpp"
 #include "membra/design/dart_layout.hpp"
 #include "membra/design/design_stretch.hpp"
+#include "membra/design/resin_face.hpp"
 #include "membra/design/stencil_trial.hpp"
 
 namespace membra {
@@ -148,13 +149,19 @@ Stencil Search::make_stencil(const DensityParameters& d) const {
   if (!darts())
     return design_stencil(spec_, r_.target, [&](const Vec2& p) { return d(p, frame_); });
   const Vec2 lambda = with_stretch(spec_, d.stretch).lambda;
-  if (spec_.layout.kind == "fisheye_darts")  // they shorten rows along the stretch
-    return layout_fisheye_darts(
-        rows_, frame_, {spec_.layout.darts, d.darts, lambda(rows_.axis), spec_.layout.min_feature});
+  DartOptions o{spec_.layout.darts, d.darts, 0.0, spec_.layout.min_feature, {}, spec_.layout.cell};
+  // A coat on the face the target bulges towards, cell by cell (the darts cut through both).
+  if (spec_.resin_side == "convex")
+    o.face = [&](const Vec2& p) {
+      return convex_face(r_.target, frame_, p, 0.5 * spec_.layout.cell);
+    };
+  if (spec_.layout.kind == "fisheye_darts") {  // they shorten rows along the stretch
+    o.lambda = lambda(rows_.axis);
+    return layout_fisheye_darts(rows_, frame_, o);
+  }
   // Darts shrink circles whichever way they run: the stretch's geometric mean sets by how much.
-  return layout_darts(
-      profiles_, frame_, r_.target.disk,
-      {spec_.layout.darts, d.darts, std::sqrt(lambda.prod()), spec_.layout.min_feature});
+  o.lambda = std::sqrt(lambda.prod());
+  return layout_darts(profiles_, frame_, r_.target.disk, o);
 }
 
 bool Search::record(const DensityParameters& d, Evaluation&& e, double seconds) {

@@ -39,7 +39,8 @@ Stencil layout_stencil(const std::function<double(const Vec2&)>& density, const 
 
 int Stencil::pieces_bottom() const {
   return static_cast<int>(std::count_if(squares.begin(), squares.end(),
-                                        [](const StencilSquare& q) { return q.face < 0; }));
+                                        [](const StencilSquare& q) { return q.face < 0; })) +
+         (pattern_bottom ? 1 : 0);
 }
 
 Stencil stencil_of(const std::vector<StencilSquare>& squares, double outline_area) {

@@ -18,7 +18,16 @@ Stencil on_face(const Stencil& stencil, int face) {
 // Pieces on both faces: the impregnate step at index 1 takes the top's, a copy after it the
 // bottom's, each a bilayer on its own face.
 void split_faces(Scene& scene, const Stencil& stencil) {
-  const Stencil top = on_face(stencil, +1), bottom = on_face(stencil, -1);
+  Stencil top, bottom;
+  if (stencil.squares.empty()) {  // darts: the two parts as laid out
+    top.pattern = stencil.pattern;
+    top.spec = stencil.spec;
+    bottom.pattern = stencil.pattern_bottom;
+    bottom.spec = stencil.spec_bottom;
+  } else {
+    top = on_face(stencil, +1);
+    bottom = on_face(stencil, -1);
+  }
   auto& resin = std::get<ImpregnateStep>(scene.protocol[1].step);
   ImpregnateStep under = resin;
   under.pattern = bottom.pattern;
@@ -46,7 +55,7 @@ void lay_on_convex_faces(Stencil& stencil, const TargetSurface& target, const Bo
 
 Scene stencil_scene(const DesignSpec& spec, const Stencil& stencil) {
   Scene scene = spec.scene;
-  if (stencil.pattern && stencil.pieces_bottom() > 0) {
+  if (stencil.pieces_bottom() > 0) {
     split_faces(scene, stencil);
   } else if (stencil.pattern) {
     auto& resin = std::get<ImpregnateStep>(scene.protocol[1].step);

@@ -178,10 +178,6 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
     throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
   s.layout.kind = o.string("layout", "squares", {"squares", "darts", "fisheye_darts"});
   read_darts(o, s);
-  if (s.layout.has_darts() && s.resin_side == "convex")
-    throw InputError(o.pointer("resin_side"),
-                     "darts are one piece of resin, on one face: \"convex\" lays separate pieces "
-                     "on either face (use \"layout\": \"squares\")");
 }
 
 // /design: the search's budget and the simulations' solver.

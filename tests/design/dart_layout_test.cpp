@@ -131,6 +131,41 @@ TEST(DartLayout, EachCentresDartsStayInItsCell) {
   EXPECT_LT(st.resin_share, 0.95);
 }
 
+// Darts through a coat on two faces: with a face per cell (here the left half on top, the right
+// underneath) the resin splits into a top part and a bottom part, the cells of each face on it,
+// and a dart is bare latex on both; the resin share counts both faces.
+TEST(DartLayout, DartsCutThroughACoatOnEitherFace) {
+  const DartProfile p = dart_profile(cap());
+  const Box2 frame{Vec2::Zero(), Vec2(0.17, 0.17)};
+  DartOptions o;
+  o.darts = 6;
+  o.scale = 1.2;
+  o.lambda = 1.15;
+  const Stencil one = layout_darts({p}, frame, true, o);
+  o.face = [](const Vec2& q) { return q.x() < 0.085 ? +1 : -1; };
+  o.cell = 0.017;
+  const Stencil two = layout_darts({p}, frame, true, o);
+  ASSERT_TRUE(two.pattern && two.pattern_bottom);
+  EXPECT_EQ(two.pieces, 2);
+  EXPECT_EQ(two.pieces_bottom(), 1);
+  EXPECT_NEAR(two.resin_share, one.resin_share, 1e-9);
+  int checked = 0;
+  for (int j = 0; j < 40; ++j)
+    for (int i = 0; i < 40; ++i) {
+      const Vec2 q = frame.min + 0.17 * Vec2((i + 0.5) / 40, (j + 0.5) / 40);
+      if ((q - Vec2(0.085, 0.085)).norm() > 0.08) continue;
+      const bool resin = one.pattern->contains(q);
+      EXPECT_EQ(two.pattern->contains(q), resin && q.x() < 0.085) << q.transpose();
+      EXPECT_EQ(two.pattern_bottom->contains(q), resin && q.x() >= 0.085) << q.transpose();
+      checked += resin ? 0 : 1;
+    }
+  EXPECT_GT(checked, 20);                   // points in darts were among them
+  o.face = [](const Vec2&) { return -1; };  // all underneath: one part, on the bottom
+  const Stencil under = layout_darts({p}, frame, true, o);
+  EXPECT_FALSE(under.pattern);
+  EXPECT_TRUE(under.pattern_bottom);
+}
+
 // A plane asks for no shrink: no darts, the whole sheet is resin.
 TEST(DartLayout, APlaneGetsNoDarts) {
   TargetSpec spec;

@@ -51,8 +51,8 @@ TEST(DesignVerdict, AStencilBarelyBelowAFlatSheetIsNoDesign) {
 
 // A target that bends with little Gaussian curvature (a cylinder) is pointed at a coat on one
 // face rather than at the adjoint's densities; a cap, whose curvature is Gaussian, is not: it is a
-// dome, pointed at darts (and a design with darts at other numbers of them); nor is a design that
-// already has the coat (the adjoint cannot place one).
+// dome, pointed at darts (and a design with darts at other numbers of them, and at a coat for them
+// to cut through); nor is a design that already has the coat (the adjoint cannot place one).
 TEST(DesignVerdict, ABentTargetIsPointedAtACoatOnOneFace) {
   DesignResult cylinder = design_with(3.0, 4.0);
   TargetSpec spec;
@@ -76,7 +76,11 @@ TEST(DesignVerdict, ABentTargetIsPointedAtACoatOnOneFace) {
   cap.spec.layout.kind = "darts";
   v = design_verdict(cap);
   EXPECT_NE(v.sentence.find("another number of darts"), std::string::npos) << v.sentence;
+  EXPECT_NE(v.sentence.find("\"resin_side\": \"convex\""), std::string::npos) << v.sentence;
   EXPECT_EQ(v.sentence.find("adjoint"), std::string::npos) << v.sentence;
+  cap.spec.bilayer = true;  // darts through a coat already
+  v = design_verdict(cap);
+  EXPECT_EQ(v.sentence.find("\"resin_side\""), std::string::npos) << v.sentence;
   cylinder.spec.bilayer = true;
   v = design_verdict(cylinder);
   EXPECT_EQ(v.sentence.find("bilayer"), std::string::npos) << v.sentence;

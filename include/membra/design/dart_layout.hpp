@@ -7,6 +7,7 @@
 // its distance from the centre is what a dome's metric is: the darts' widths are read off the
 // target's geodesic polar coordinates. The latex in the darts stays in tension, so nothing
 // wrinkles, unlike stiff squares with latex around them (stencil_layout.hpp).
+#include <functional>
 #include <vector>
 
 #include "membra/design/stencil_layout.hpp"
@@ -40,6 +41,10 @@ struct DartOptions {
   double scale = 1.0;          // the darts' latex share over what the deficit asks (a calibration)
   double lambda = 1.5;         // the frame's pre-stretch (the latex shrinks by 1 - 1/lambda)
   double min_feature = 0.004;  // m: darts begin where they are this wide; spokes stay as wide
+  // A coat on one face (bilayer): with `face` (a frame point -> +1 top, -1 bottom) the resin
+  // goes on the face it names, decided cell by cell of `cell` (resin_face.hpp: "convex").
+  std::function<int(const Vec2&)> face = {};
+  double cell = 0.02;  // m
 };
 
 // The stencil on `frame` (the target's footprint laid over it, centre on centre, the frame's

@@ -43,8 +43,13 @@ struct Stencil {
   // From layout_stencil: its pieces, and the area of the cells inside the outline.
   std::vector<StencilSquare> squares;
   double outline_area = 0.0;  // m^2
+  // A stencil not made of squares (darts) with resin on both faces: the bottom face's (`spec`
+  // and `pattern` are then the top's, either may be empty).
+  PatternSpec spec_bottom = {};
+  PatternPtr pattern_bottom = nullptr;
 
-  int pieces_bottom() const;  // of the squares, those laid on the bottom face
+  // Pieces laid on the bottom face: squares, or a darts stencil's bottom part.
+  int pieces_bottom() const;
 };
 
 // `density(p)` at each cell centre p (frame coordinates, m); cells whose centre is not
