@@ -109,7 +109,7 @@ PatternSpec dart(const std::vector<DartProfile>& profiles, const std::vector<Vec
     const Vec2 l = polar(centre, r, theta - half_angle), rt = polar(centre, r, theta + half_angle);
     if (!in_cell(centres, own, l, 0.5 * o.min_feature) ||
         !in_cell(centres, own, rt, 0.5 * o.min_feature)) {
-      if (!left.empty()) break;  // the next centre's darts take over
+      if (!left.empty()) break;  // the dart ends at its cell's border
       continue;
     }
     left.push_back(l);
@@ -177,6 +177,71 @@ DartProfile dart_profile(const TargetSurface& target, const Vec2& c, int rays, i
 
 namespace {
 
+// The target's Gaussian curvature on an n x n grid over its footprint, from second differences
+// `h` apart (wider than the target's triangles, whose heights are linear in between); points
+// within h of the rim, or off a disk, are NaN.
+std::vector<double> curvature_grid(const TargetSurface& target, int n, double h,
+                                   std::vector<Vec2>& points) {
+  const Vec2 lo = target.x.topRows<2>().rowwise().minCoeff();
+  const Vec2 hi = target.x.topRows<2>().rowwise().maxCoeff();
+  const Vec2 c = 0.5 * (lo + hi);
+  std::vector<double> k;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Vec2 p = lo + (hi - lo).cwiseProduct(Vec2(i, j) / (n - 1.0));
+      points.push_back(p - c);
+      const bool inside = target.disk
+                              ? (p - c).norm() < 0.5 * (hi - lo).minCoeff() - h
+                              : ((p - lo).array() > h).all() && ((hi - p).array() > h).all();
+      if (!inside) {
+        k.push_back(std::numeric_limits<double>::quiet_NaN());
+        continue;
+      }
+      const auto z = [&](double dx, double dy) { return target_height(target, p + Vec2(dx, dy)); };
+      const double z0 = z(0, 0), zx = (z(h, 0) - z(-h, 0)) / (2 * h);
+      const double zy = (z(0, h) - z(0, -h)) / (2 * h);
+      const double zxx = (z(h, 0) + z(-h, 0) - 2 * z0) / (h * h);
+      const double zyy = (z(0, h) + z(0, -h) - 2 * z0) / (h * h);
+      const double zxy = (z(h, h) - z(h, -h) - z(-h, h) + z(-h, -h)) / (4 * h * h);
+      const double g = 1.0 + zx * zx + zy * zy;
+      k.push_back((zxx * zyy - zxy * zxy) / (g * g));
+    }
+  return k;
+}
+
+}  // namespace
+
+std::vector<Vec2> curvature_peaks(const TargetSurface& target, double separation) {
+  const Vec2 lo = target.x.topRows<2>().rowwise().minCoeff();
+  const Vec2 hi = target.x.topRows<2>().rowwise().maxCoeff();
+  constexpr int n = 61;
+  std::vector<Vec2> p;
+  const std::vector<double> k = curvature_grid(target, n, 0.1 * (hi - lo).minCoeff(), p);
+  double top = 0.0;
+  for (double v : k)
+    if (std::isfinite(v)) top = std::max(top, v);
+  std::vector<std::pair<double, Vec2>> peaks;
+  for (size_t i = 0; i < k.size(); ++i) {
+    if (!std::isfinite(k[i]) || k[i] <= 0.0 || k[i] < 0.3 * top) continue;
+    double lowest = k[i];
+    bool highest = true;
+    for (size_t j = 0; j < k.size() && highest; ++j) {
+      if (j == i || !std::isfinite(k[j]) || (p[j] - p[i]).norm() > separation) continue;
+      highest = k[j] < k[i];
+      lowest = std::min(lowest, k[j]);
+    }
+    if (highest && k[i] - lowest >= 0.25 * k[i]) peaks.emplace_back(k[i], p[i]);
+  }
+  std::sort(peaks.begin(), peaks.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<Vec2> out;
+  for (const auto& [value, point] : peaks)
+    if (out.size() < 16) out.push_back(point);
+  return out;
+}
+
+namespace {
+
 // A polygon from its corners, through mm as a scene file holds them.
 PatternSpec box_spec(const Vec2& lo, const Vec2& hi) {
   PatternSpec p;
@@ -207,10 +272,17 @@ std::array<PatternSpec, 2> faces_of(const Box2& frame, bool disk, const DartOpti
       const Vec2 c1(i == nx - 1 ? hi.x() : b.x(), j == ny - 1 ? hi.y() : b.y());
       cells[o.face(0.5 * (a + b)) < 0 ? 1 : 0].push_back(box_spec(c0, c1));
     }
-  // All on one face: the whole sheet there.
+  // All on one face: the whole sheet there. Else each face is the sheet less the other's cells,
+  // so that both stay inside its outline (a disk's too).
   if (cells[1].empty()) return {sheet, {}};
   if (cells[0].empty()) return {PatternSpec{}, sheet};
-  return {union_spec(std::move(cells[0])), union_spec(std::move(cells[1]))};
+  std::array<PatternSpec, 2> out;
+  for (int f = 0; f < 2; ++f) {
+    std::vector<PatternSpec> parts = {sheet};
+    for (PatternSpec& c : cells[1 - f]) parts.push_back(std::move(c));
+    out[static_cast<size_t>(f)] = difference_spec(std::move(parts));
+  }
+  return out;
 }
 
 // The sheet in resin, less `holes` of bare latex (which leave it in one piece: each dart and

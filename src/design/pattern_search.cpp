@@ -68,6 +68,7 @@ class Search {
   bool record(const DensityParameters& d, Evaluation&& e, double seconds);
   Stencil make_stencil(const DensityParameters& d) const;
   void make_dart_profiles();
+  std::vector<Vec2> found_centres();
   void note_frame_fit();
 
   const DesignSpec& spec_;
@@ -84,13 +85,15 @@ class Search {
   using Tried = std::tuple<double, std::vector<StencilSquare>, std::vector<double>>;
   static std::vector<double> hole_corners(const Stencil& s) {
     std::vector<double> out;
-    if (s.squares.empty() && s.spec.kind == PatternSpec::Kind::difference)
-      for (const PatternSpec& part : s.spec.parts)
-        for (const Vec2& p : part.points) out.insert(out.end(), {p.x(), p.y()});
+    for (const PatternSpec* face : {&s.spec, &s.spec_bottom})  // either may hold the darts
+      if (s.squares.empty() && face->kind == PatternSpec::Kind::difference)
+        for (const PatternSpec& part : face->parts)
+          for (const Vec2& p : part.points) out.insert(out.end(), {p.x(), p.y()});
     return out;
   }
   std::vector<Tried> tried_;
   std::vector<DartProfile> profiles_;  // darts: the target's deficit about each centre
+  std::vector<Vec2> centres_;          // darts: their centres, when not the footprint's
   RowProfile rows_;                    // fisheye darts: the rows' latex shares
   int stretch_axis() const { return spec_.lambda.x() >= spec_.lambda.y() ? 0 : 1; }
 };
@@ -99,23 +102,52 @@ class Search {
 // lengths along the spokes from it, so its frame must fit the target (note_frame_fit); several
 // must lie inside the footprint.
 void Search::make_dart_profiles() {
-  if (spec_.layout.centres.empty()) {
+  centres_ = spec_.layout.auto_centres ? found_centres() : spec_.layout.centres;
+  if (centres_.empty()) {
     profiles_ = {dart_profile(r_.target)};
     note_frame_fit();
     return;
   }
   const Vec2 lo = r_.target.x.topRows<2>().rowwise().minCoeff();
   const Vec2 hi = r_.target.x.topRows<2>().rowwise().maxCoeff();
-  for (size_t i = 0; i < spec_.layout.centres.size(); ++i) {
-    const Vec2 c = spec_.layout.centres[i] + 0.5 * (lo + hi);
+  for (size_t i = 0; i < centres_.size(); ++i) {
+    const Vec2 c = centres_[i] + 0.5 * (lo + hi);
+    // Rays from a centre on the rim would have no length towards it.
+    const double m = 2.0 * spec_.layout.min_feature;
     const bool inside = r_.target.disk
-                            ? (c - 0.5 * (lo + hi)).norm() < 0.5 * (hi - lo).minCoeff()
-                            : (c.array() > lo.array()).all() && (c.array() < hi.array()).all();
-    if (!inside)
-      throw InputError(spec_.file.string() + ": /resin/dart_centres/" + std::to_string(i),
-                       "outside the target's footprint (mm from its centre)");
+                            ? (c - 0.5 * (lo + hi)).norm() < 0.5 * (hi - lo).minCoeff() - m
+                            : ((c - lo).array() > m).all() && ((hi - c).array() > m).all();
+    if (!inside) {
+      const std::string where = "/resin/dart_centres/" + std::to_string(i);
+      throw InputError(spec_.file.empty() ? where : spec_.file.string() + ": " + where,
+                       "outside the target's footprint, or within twice min_feature of its rim "
+                       "(mm from its centre)");
+    }
     profiles_.push_back(dart_profile(r_.target, c));
   }
+}
+
+// `"dart_centres": "auto"`: the peaks of the target's Gaussian curvature, said in the message
+// (none: the footprint's centre).
+std::vector<Vec2> Search::found_centres() {
+  const Vec2 size =
+      r_.target.x.topRows<2>().rowwise().maxCoeff() - r_.target.x.topRows<2>().rowwise().minCoeff();
+  const std::vector<Vec2> peaks =
+      curvature_peaks(r_.target, std::max(4.0 * spec_.layout.min_feature, 0.2 * size.minCoeff()));
+  if (peaks.empty()) {
+    r_.add_message(
+        "The target's Gaussian curvature has no peak that stands out: darts about its centre.");
+    return peaks;
+  }
+  std::string text = "Darts about " + std::to_string(peaks.size()) +
+                     " centres where the target's Gaussian curvature peaks (mm):";
+  char point[64];
+  for (const Vec2& p : peaks) {
+    std::snprintf(point, sizeof point, " (%.0f, %.0f)", p.x() / units::mm, p.y() / units::mm);
+    text += point;
+  }
+  r_.add_message(text + ".");
+  return peaks;
 }
 
 // Darts keep lengths along the spokes: a frame as wide as the target measured along its surface
@@ -193,6 +225,7 @@ void Search::finish() {
         "not a prediction (more iterations, or the static solver).");
   r_.best = best_d_;
   r_.spec = with_stretch(spec_, best_d_.stretch);  // its scene.json stretches as it was run
+  r_.spec.layout.centres = centres_;               // found ones too (report.json)
   adopt_stencil(std::move(best_), r_);
 }
 

@@ -141,6 +141,13 @@ void read_darts(const JsonObject& o, DesignSpec& s) {
       throw InputError(o.pointer("dart_centres"),
                        "\"dart_centres\" place darts about several points: set \"layout\": "
                        "\"darts\"");
+    if (o.at("dart_centres").is_string()) {
+      if (o.at("dart_centres") != "auto")
+        throw InputError(o.pointer("dart_centres"),
+                         "expected \"auto\" or an array of [x, y] points (mm)");
+      s.layout.auto_centres = true;
+      return;
+    }
     s.layout.centres = read_points(o, "dart_centres", 1);
     if (s.layout.centres.size() > 16)
       throw InputError(o.pointer("dart_centres"), "at most 16 centres");
@@ -177,6 +184,10 @@ void read_resin(const JsonObject& top, DesignSpec& s) {
   if (s.layout.cell > 0.5 * s.frame)
     throw InputError(o.pointer("cell"), "the cell must be at most half the frame");
   s.layout.kind = o.string("layout", "squares", {"squares", "darts", "fisheye_darts"});
+  if (s.layout.kind == "fisheye_darts" && s.resin_side == "convex")
+    throw InputError(o.pointer("resin_side"),
+                     "fisheye darts lie on one face (\"convex\" cuts only \"darts\" through a "
+                     "coat on either face)");
   read_darts(o, s);
 }
 

@@ -118,9 +118,17 @@ TEST(DartLayout, EachCentresDartsStayInItsCell) {
   ASSERT_EQ(st.spec.kind, PatternSpec::Kind::difference);
   int left = 0, right = 0;
   const double middle = 0.0775, margin = 0.5 * o.min_feature;
+  const Vec2 left_centre(middle - 0.04 * 155.0 / 150.0, middle);
+  const Vec2 right_centre(middle + 0.04 * 155.0 / 150.0, middle);
   for (size_t i = 1; i < st.spec.parts.size(); ++i) {
     const auto& pts = st.spec.parts[i].points;
-    const bool is_left = pts.front().x() < middle;
+    // The dart's own centre: the one its tip (its vertex nearest either centre) is nearest to.
+    double to_left = 1e9, to_right = 1e9;
+    for (const Vec2& q : pts) {
+      to_left = std::min(to_left, (q - left_centre).norm());
+      to_right = std::min(to_right, (q - right_centre).norm());
+    }
+    const bool is_left = to_left < to_right;
     (is_left ? left : right) += 1;
     for (const Vec2& q : pts)
       EXPECT_TRUE(is_left ? q.x() <= middle - margin + 1e-9 : q.x() >= middle + margin - 1e-9)
@@ -164,6 +172,34 @@ TEST(DartLayout, DartsCutThroughACoatOnEitherFace) {
   const Stencil under = layout_darts({p}, frame, true, o);
   EXPECT_FALSE(under.pattern);
   EXPECT_TRUE(under.pattern_bottom);
+}
+
+// "dart_centres": "auto": the free form's two bumps and its valley's middle are peaks of its
+// Gaussian curvature (within 5 mm of where the formula puts them; a fourth, weaker one sits at a
+// valley's end), highest first; a sphere's cap and a paraboloid, whose curvature is even or
+// nearly so, have none.
+TEST(DartLayout, CurvaturePeaksFindTheBumpsAndNotASpheresEvenCurvature) {
+  TargetSpec spec;
+  spec.kind = "height_field";
+  spec.size = 0.15;
+  spec.formula =
+      "12*exp(-((x-35)^2+(y-20)^2)/800) + 10*exp(-((x+35)^2+(y+25)^2)/800) - "
+      "6*exp(-((x-y)^2)/1000)";
+  const std::vector<Vec2> peaks = curvature_peaks(make_target(spec), 0.03);
+  ASSERT_GE(peaks.size(), 3u);
+  EXPECT_LE(peaks.size(), 4u);
+  // K at the bumps' tops (from the formula, grid of 1 mm): 7.8e-4 and 4.1e-4 at (40, 15) and
+  // (-41, -19); 3.4e-4 at the valley's middle.
+  const std::vector<Vec2> expected = {{0.040, 0.015}, {-0.041, -0.019}, {0.0, 0.0}};
+  for (const Vec2& e : expected) {
+    double nearest = 1.0;
+    for (const Vec2& p : peaks) nearest = std::min(nearest, (p - e).norm());
+    EXPECT_LT(nearest, 0.005) << e.transpose();
+  }
+  EXPECT_LT((peaks.front() - expected.front()).norm(), 0.005);  // the highest first
+  EXPECT_TRUE(curvature_peaks(cap(), 0.03).empty());
+  spec.formula = "-0.002*(x^2+y^2)";
+  EXPECT_TRUE(curvature_peaks(make_target(spec), 0.03).empty());
 }
 
 // A plane asks for no shrink: no darts, the whole sheet is resin.

@@ -339,10 +339,6 @@ TEST(InverseDesign, AConvexCoatMakesTheTwistedWave) {
   EXPECT_LT(d.stencil.pieces_bottom(), d.stencil.pieces);
 }
 
-// Fisheye darts size their lenses for latex that shrinks along the rows only: under a stretch of
-// both axes the design says so; a dome's darts on a frame wider than the cap measured along its
-// surface (200 against 169 mm) name the frame that fits; and darts on a saddle, whose circles are
-// longer than on a plane, say they have no width there.
 // Darts about two centres on a target with two domes: 17 x 17 sheet, 155 mm frame at 1.1 x 1.1,
 // four darts each. Measured 1.81 % with two centres (3.15 % with one, a flat sheet 3.99 %).
 // A centre outside the target's footprint is refused, naming it.
@@ -367,6 +363,10 @@ TEST(InverseDesign, DartsAboutTwoCentresComeCloserThanOne) {
   }
 }
 
+// Fisheye darts size their lenses for latex that shrinks along the rows only: under a stretch of
+// both axes the design says so; a dome's darts on a frame wider than the cap measured along its
+// surface (200 against 169 mm) name the frame that fits; and darts on a saddle, whose circles are
+// longer than on a plane, say they have no width there.
 TEST(InverseDesign, DartsSayWhenTheFrameDoesNotSuitThem) {
   json design = small_design({{"saddle", {{"size", 150}, {"height", 15}}}}, 1);
   design["resin"].update({{"layout", "fisheye_darts"}, {"darts", 3}});
@@ -463,6 +463,9 @@ TEST(InverseDesign, BadDesignFilesNameTheField) {
   EXPECT_EQ(parse_design(j).resin_side, "convex");
   j["resin"]["layout"] = "darts";  // darts through a coat on either face
   EXPECT_EQ(parse_design(j).resin_side, "convex");
+  j["resin"]["layout"] = "fisheye_darts";  // on one face only
+  EXPECT_NE(error_of(j).find("/resin/resin_side"), std::string::npos);
+  j["resin"]["layout"] = "darts";
   j["resin"].erase("resin_side");
   j["resin"]["layout"] = "rings";
   EXPECT_NE(error_of(j).find("/resin/layout"), std::string::npos);

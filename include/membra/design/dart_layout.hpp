@@ -25,6 +25,7 @@ struct DartProfile {
   std::vector<std::vector<double>> s, deficit;  // per ray, per sample: m, and the deficit
   // m: the target's half-width measured along its surface (each ray's length along it, scaled
   // from where the ray leaves the footprint to the footprint's inscribed half-width; averaged).
+  // Meaningful for a profile about the footprint's centre only.
   // A frame of twice this makes the darts' form at the target's size.
   double radius = 0.0;
 
@@ -35,6 +36,13 @@ DartProfile dart_profile(const TargetSurface& target, int rays = 72, int samples
 // The same from another centre (inside the footprint): each ray runs to the footprint's edge.
 DartProfile dart_profile(const TargetSurface& target, const Vec2& centre, int rays = 72,
                          int samples = 48);
+
+// Where darts should centre on a target with several domes or hollows (`"dart_centres": "auto"`):
+// the peaks of its Gaussian curvature (m, target coordinates from the footprint's centre), each
+// positive, at least 0.3 of the highest, and standing out from its surroundings within
+// `separation` by a quarter of its value (so a sphere's even curvature has none: one centre, the
+// footprint's, serves it). At most 16, highest first.
+std::vector<Vec2> curvature_peaks(const TargetSurface& target, double separation);
 
 struct DartOptions {
   int darts = 6;

@@ -22,6 +22,7 @@ struct StencilLayout {
   int darts = 6;
   // Darts: their centres (m, target coordinates from the footprint's centre); empty: the centre.
   std::vector<Vec2> centres = {};
+  bool auto_centres = false;  // darts: the centres are where the target's curvature peaks
   // Darts of either kind (one piece of resin whose darts' scale a search moves).
   bool has_darts() const { return kind != "squares"; }
 };
