@@ -220,14 +220,25 @@ std::vector<Vec2> curvature_peaks(const TargetSurface& target, double separation
   double top = 0.0;
   for (double v : k)
     if (std::isfinite(v)) top = std::max(top, v);
+  // A point on the border of the grid's valid part cannot tell a peak from a slope cut off.
+  const auto interior = [&](size_t i) {
+    const int a = static_cast<int>(i) % n, b = static_cast<int>(i) / n;
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        const int x = a + di, y = b + dj;
+        if (x < 0 || y < 0 || x >= n || y >= n || !std::isfinite(k[static_cast<size_t>(y * n + x)]))
+          return false;
+      }
+    return true;
+  };
   std::vector<std::pair<double, Vec2>> peaks;
   for (size_t i = 0; i < k.size(); ++i) {
-    if (!std::isfinite(k[i]) || k[i] <= 0.0 || k[i] < 0.3 * top) continue;
+    if (!std::isfinite(k[i]) || k[i] <= 0.0 || k[i] < 0.3 * top || !interior(i)) continue;
     double lowest = k[i];
     bool highest = true;
     for (size_t j = 0; j < k.size() && highest; ++j) {
       if (j == i || !std::isfinite(k[j]) || (p[j] - p[i]).norm() > separation) continue;
-      highest = k[j] < k[i];
+      highest = k[j] < k[i] || (k[j] == k[i] && j > i);  // of a tie, the first
       lowest = std::min(lowest, k[j]);
     }
     if (highest && k[i] - lowest >= 0.25 * k[i]) peaks.emplace_back(k[i], p[i]);

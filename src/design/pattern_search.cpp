@@ -132,8 +132,13 @@ void Search::make_dart_profiles() {
 std::vector<Vec2> Search::found_centres() {
   const Vec2 size =
       r_.target.x.topRows<2>().rowwise().maxCoeff() - r_.target.x.topRows<2>().rowwise().minCoeff();
-  const std::vector<Vec2> peaks =
+  std::vector<Vec2> peaks =
       curvature_peaks(r_.target, std::max(4.0 * spec_.layout.min_feature, 0.2 * size.minCoeff()));
+  // Centres keep twice min_feature (and a little) from the rim, as written ones must.
+  const double room = 0.5 * size.minCoeff() - 2.5 * spec_.layout.min_feature;
+  std::erase_if(peaks, [&](const Vec2& p) {
+    return r_.target.disk ? p.norm() > room : p.cwiseAbs().maxCoeff() > room;
+  });
   if (peaks.empty()) {
     r_.add_message(
         "The target's Gaussian curvature has no peak that stands out: darts about its centre.");

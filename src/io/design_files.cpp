@@ -107,6 +107,7 @@ nlohmann::json make_design_report(const DesignResult& d) {
     for (const Vec2& c : d.spec.layout.centres)
       centres.push_back({c.x() / units::mm, c.y() / units::mm});
     report["design"]["stencil"]["dart_centres_mm"] = centres;
+    report["design"]["stencil"]["dart_centres_found"] = d.spec.layout.auto_centres;
   }
   return report;
 }

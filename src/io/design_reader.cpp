@@ -146,9 +146,9 @@ void read_darts(const JsonObject& o, DesignSpec& s) {
         throw InputError(o.pointer("dart_centres"),
                          "expected \"auto\" or an array of [x, y] points (mm)");
       s.layout.auto_centres = true;
-      return;
+    } else {
+      s.layout.centres = read_points(o, "dart_centres", 1);
     }
-    s.layout.centres = read_points(o, "dart_centres", 1);
     if (s.layout.centres.size() > 16)
       throw InputError(o.pointer("dart_centres"), "at most 16 centres");
     for (size_t i = 0; i < s.layout.centres.size(); ++i)

@@ -167,7 +167,11 @@ TEST(DartLayout, DartsCutThroughACoatOnEitherFace) {
       EXPECT_EQ(two.pattern_bottom->contains(q), resin && q.x() >= 0.085) << q.transpose();
       checked += resin ? 0 : 1;
     }
-  EXPECT_GT(checked, 20);                   // points in darts were among them
+  EXPECT_GT(checked, 20);  // points in darts were among them
+  // Off the disk (the frame's corners) neither face has resin.
+  for (const Vec2& q :
+       {Vec2(0.005, 0.005), Vec2(0.165, 0.005), Vec2(0.165, 0.165), Vec2(0.005, 0.165)})
+    EXPECT_FALSE(two.pattern->contains(q) || two.pattern_bottom->contains(q)) << q.transpose();
   o.face = [](const Vec2&) { return -1; };  // all underneath: one part, on the bottom
   const Stencil under = layout_darts({p}, frame, true, o);
   EXPECT_FALSE(under.pattern);

@@ -25,8 +25,8 @@ std::vector<ScriptCommand> parse_view_script(std::istream& in, const std::string
 std::string view_script_help();
 
 // Carries out a command that needs no window. Returns false if it is a window command
-// (screenshot, fps, save, export, quit, tool, drag, click, holesize) left to the caller. Throws InputError naming the line
-// when the session refuses (e.g. impregnate before stretch).
+// (screenshot, fps, save, export, quit, tool, drag, click, holesize) left to the caller. Throws
+// InputError naming the line when the session refuses (e.g. impregnate before stretch).
 bool run_session_command(const ScriptCommand& command, ViewerSession& session,
                          ViewSettings& settings);
 
