@@ -197,12 +197,15 @@ std::vector<double> curvature_grid(const TargetSurface& target, int n, double h,
         k.push_back(std::numeric_limits<double>::quiet_NaN());
         continue;
       }
-      const auto z = [&](double dx, double dy) { return target_height(target, p + Vec2(dx, dy)); };
-      const double z0 = z(0, 0), zx = (z(h, 0) - z(-h, 0)) / (2 * h);
-      const double zy = (z(0, h) - z(0, -h)) / (2 * h);
-      const double zxx = (z(h, 0) + z(-h, 0) - 2 * z0) / (h * h);
-      const double zyy = (z(0, h) + z(0, -h) - 2 * z0) / (h * h);
-      const double zxy = (z(h, h) - z(h, -h) - z(-h, h) + z(-h, -h)) / (4 * h * h);
+      // The nine heights of the 3 x 3 stencil, each looked up once: z[1 + dx][1 + dy].
+      double z[3][3];
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          z[1 + dx][1 + dy] = target_height(target, p + h * Vec2(dx, dy));
+      const double zx = (z[2][1] - z[0][1]) / (2 * h), zy = (z[1][2] - z[1][0]) / (2 * h);
+      const double zxx = (z[2][1] + z[0][1] - 2 * z[1][1]) / (h * h);
+      const double zyy = (z[1][2] + z[1][0] - 2 * z[1][1]) / (h * h);
+      const double zxy = (z[2][2] - z[2][0] - z[0][2] + z[0][0]) / (4 * h * h);
       const double g = 1.0 + zx * zx + zy * zy;
       k.push_back((zxx * zyy - zxy * zxy) / (g * g));
     }

@@ -44,29 +44,37 @@ TEST(DartLayout, ACapsDeficitIsItsSpheres) {
     }
 }
 
-// A paraboloid z = -a r^2 over a square is a surface of revolution: its circles are 2 pi rho long
-// and its length from the centre s(rho) = (rho sqrt(1 + k^2 rho^2) + asinh(k rho) / k) / 2 with
-// k = 2a. The deficit 1 - rho / s follows it to the footprint's edge, along an axis and along a
-// diagonal (1.4 % and 2.8 % there), where the sideways samples must stay on the footprint.
+// A paraboloid z = -a r^2 about its apex is a surface of revolution: its circles are 2 pi rho long
+// and its length from the apex s(rho) = (rho sqrt(1 + k^2 rho^2) + asinh(k rho) / k) / 2 with
+// k = 2a (here a = 0.002 /mm, k = 4 /m).
+double paraboloid_length(double rho) {
+  constexpr double k = 4.0;
+  return 0.5 * (rho * std::sqrt(1.0 + k * k * rho * rho) + std::asinh(k * rho) / k);
+}
+
+// Its deficit 1 - rho / s at u of the length along the surface of a ray ending at rho_end.
+double paraboloid_deficit(double rho_end, double u) {
+  double lo = 0.0, hi = rho_end;  // find rho with s(rho) = u s(rho_end)
+  for (int i = 0; i < 60; ++i)
+    (paraboloid_length(0.5 * (lo + hi)) < u * paraboloid_length(rho_end) ? lo : hi) =
+        0.5 * (lo + hi);
+  const double rho = 0.5 * (lo + hi);
+  return 1.0 - rho / paraboloid_length(rho);
+}
+
+// The paraboloid over a square: the deficit follows the closed form to the footprint's edge,
+// along an axis and along a diagonal (1.4 % and 2.8 % there), where the sideways samples must
+// stay on the footprint.
 TEST(DartLayout, ASquareDomesDeficitReachesItsEdges) {
   TargetSpec spec;
   spec.kind = "height_field";
   spec.size = 0.15;
   spec.formula = "-0.002*(x^2+y^2)";
   const DartProfile p = dart_profile(make_target(spec));
-  const double k = 2.0 * 2.0;  // 1/m: a = 0.002 /mm
-  const auto s = [&](double rho) {
-    return 0.5 * (rho * std::sqrt(1.0 + k * k * rho * rho) + std::asinh(k * rho) / k);
-  };
   for (double theta : {0.0, 0.25 * kPi})
     for (double u : {0.5, 1.0}) {
       const double rho_end = 0.075 / std::max(std::cos(theta), std::sin(theta)) * (1.0 - 4e-3);
-      // u of the ray's length along the surface: find rho with s(rho) = u s(rho_end).
-      double lo = 0.0, hi = rho_end;
-      for (int i = 0; i < 60; ++i)
-        (s(0.5 * (lo + hi)) < u * s(rho_end) ? lo : hi) = 0.5 * (lo + hi);
-      const double rho = 0.5 * (lo + hi);
-      EXPECT_NEAR(p.at(theta, u), 1.0 - rho / s(rho), 1e-3) << theta << " " << u;
+      EXPECT_NEAR(p.at(theta, u), paraboloid_deficit(rho_end, u), 1e-3) << theta << " " << u;
     }
 }
 
@@ -81,22 +89,13 @@ TEST(DartLayout, AnOffCentreProfileRunsToTheFootprintsEdge) {
   const TargetSurface t = make_target(spec);
   const DartProfile p = dart_profile(t, Vec2(0.03, 0.0));
   EXPECT_NEAR(p.centre.x(), 0.03, 1e-12);
-  const double k = 4.0;
-  const auto s = [&](double rho) {
-    return 0.5 * (rho * std::sqrt(1.0 + k * k * rho * rho) + std::asinh(k * rho) / k);
-  };
   for (const auto& [theta, edge] : {std::pair{0.0, 0.045}, {0.5 * kPi, 0.075}, {kPi, 0.105}}) {
-    const double rho_end = edge * (1.0 - 4e-3);
-    EXPECT_NEAR(p.s[static_cast<size_t>(std::lround(theta / (2.0 * kPi) * p.rays))].back(),
-                s(rho_end), 2e-3 * s(rho_end))
+    const double rho_end = edge * (1.0 - 4e-3), s_end = paraboloid_length(rho_end);
+    EXPECT_NEAR(p.s[static_cast<size_t>(std::lround(theta / (2.0 * kPi) * p.rays))].back(), s_end,
+                2e-3 * s_end)
         << theta;
-    for (double u : {0.5, 1.0}) {
-      double lo = 0.0, hi = rho_end;
-      for (int i = 0; i < 60; ++i)
-        (s(0.5 * (lo + hi)) < u * s(rho_end) ? lo : hi) = 0.5 * (lo + hi);
-      const double rho = 0.5 * (lo + hi);
-      EXPECT_NEAR(p.at(theta, u), 1.0 - rho / s(rho), 1e-3) << theta << " " << u;
-    }
+    for (double u : {0.5, 1.0})
+      EXPECT_NEAR(p.at(theta, u), paraboloid_deficit(rho_end, u), 1e-3) << theta << " " << u;
   }
 }
 
