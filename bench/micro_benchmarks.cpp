@@ -16,6 +16,7 @@
 #include "membra/model/forces.hpp"
 #include "membra/model/sheet.hpp"
 #include "membra/solve/hessian_assembler.hpp"
+#include "membra/solve/newton_workspace.hpp"
 
 namespace {
 
@@ -159,6 +160,22 @@ void BM_Factorization(benchmark::State& state) {
   set_per_item(state, b.sheet.model.num_particles());  // ns per particle
 }
 BENCHMARK(BM_Factorization)->ArgsProduct({{64, 128}, {0, 1, 2, 3}})->Unit(benchmark::kMillisecond);
+
+// What a Newton solve sets up before its first factorization (NewtonWorkspace): the Hessians'
+// pattern alone (arg 1 = 0), or with CHOLMOD's symbolic analysis (1: the ordering and the
+// supernodes). Against BM_Factorization it says what a path saves by keeping it from one
+// increment to the next (docs/solver.md).
+void BM_NewtonSetup(benchmark::State& state) {
+  const BentSheet b(static_cast<int>(state.range(0)));
+  const int ndof = static_cast<int>(b.dof.size());
+  for (auto _ : state) {
+    membra::NewtonWorkspace ws(b.sheet.model, b.dof, ndof);
+    if (state.range(1) != 0) ws.llt.analyzePattern(ws.exact.lower());
+    benchmark::DoNotOptimize(ws.exact.lower().valuePtr());
+  }
+  set_per_item(state, b.sheet.model.num_particles());  // ns per particle
+}
+BENCHMARK(BM_NewtonSetup)->ArgsProduct({{32, 64, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 void BM_StressTensor(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));

@@ -32,6 +32,7 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
   j["iterations"] = s.iterations;
   j["force_passes"] = s.force_passes;
   j["factorizations"] = s.factorizations;
+  j["setups"] = s.setups;
   j["negative_curvature_steps"] = s.negative_curvature_steps;
   j["increments"] = s.increments;
   j["increments_halved"] = s.increments_halved;

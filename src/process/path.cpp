@@ -6,6 +6,7 @@
 
 #include "membra/core/stop_request.hpp"
 #include "membra/measure/stress.hpp"
+#include "membra/solve/newton_solver.hpp"
 #include "membra/solve/solver.hpp"
 
 namespace membra {
@@ -33,7 +34,8 @@ void ramp_path(const Path& path, double seconds, const State& s, SolverSettings&
 
 SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& s,
                              const std::string& stage, const ProgressFn& progress,
-                             FrameRecorder* recorder, double tolerance, const Path* ramp) {
+                             FrameRecorder* recorder, double tolerance, const Path* ramp,
+                             std::shared_ptr<NewtonCache> newton_cache) {
   const SimulationSpec& sim = scene.simulation;
   const Model& m = p.membrane.sheet.model;
   SolverSettings o;
@@ -46,6 +48,7 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
   o.dt = sim.dt;
   o.steps = sim.steps;
   o.stop_when_converged = sim.stop_when_converged;
+  o.newton_cache = std::move(newton_cache);
   if (p.deadline) {  // what is left of the run's budget; a spent budget stops at the first check
     const double left =
         std::chrono::duration<double>(*p.deadline - std::chrono::steady_clock::now()).count();
@@ -82,6 +85,7 @@ void add_work(SolveReport& total, const SolveReport& r) {
   total.iterations += r.iterations;
   total.force_passes += r.force_passes;
   total.factorizations += r.factorizations;
+  total.setups += r.setups;
   total.negative_curvature_steps += r.negative_curvature_steps;
   total.increments += r.increments;
   total.increments_halved += r.increments_halved;
@@ -127,6 +131,9 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
   const int full = 8, units = full * n;
   int at = 0, step = full, last_step = 0;
   Points motion;  // the equilibrium's change over the last accepted increment
+  // Every increment solves the same sheet: Newton sets up its pattern and analysis once (its
+  // cost exceeds a factorization's at 64^2; docs/solver.md), and frees them with the path.
+  const auto cache = newton ? make_newton_cache() : nullptr;
   while (at < units && !total.diverged) {
     const int next = std::min(units, at + step);
     const double t = static_cast<double>(next) / units;
@@ -138,8 +145,8 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
     // (simulation.path_tolerance) saves their slow tails; the last one is solved in full.
     const double tolerance =
         next == units ? scene.simulation.tolerance : scene.simulation.path_tolerance;
-    const SolveReport r =
-        solve_scene_step(scene, p, s, increment_stage(name, t, n), progress, nullptr, tolerance);
+    const SolveReport r = solve_scene_step(scene, p, s, increment_stage(name, t, n), progress,
+                                           nullptr, tolerance, nullptr, cache);
     if (r.out_of_time) {  // the run's budget is spent: stop here, not halve or go on
       accumulate(total, r);
       recorder.record(p.membrane.sheet.model, s.x, thickness);  // the state it stopped in

@@ -28,15 +28,23 @@ std::array<int, 2> spring_ends(const Springs& s, int i) {
 }  // namespace
 
 HessianAssembler::HessianAssembler(const Model& model, const std::vector<int>& dof, int ndof)
-    : model_(model) {
+    : model_(&model) {
   // The pattern: every pair of free coordinates that share an element, lower triangle.
-  std::vector<Eigen::Triplet<double>> t;
-  auto keep = [&](int r, int c) {
-    if (r >= 0 && c >= 0 && r >= c) t.emplace_back(r, c, 0.0);
-  };
   const Springs& s = model.springs;
   const Bending& b = model.bending;
   const Hinges& h = model.hinges;
+  // Sized up front: growing vectors of millions of entries cost more than filling them.
+  const size_t entries = 36 * static_cast<size_t>(s.size()) + 81 * static_cast<size_t>(b.size()) +
+                         144 * static_cast<size_t>(h.size());
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(entries + static_cast<size_t>(ndof));
+  spring_slots_.reserve(36 * static_cast<size_t>(s.size()));
+  bend_slots_.reserve(81 * static_cast<size_t>(b.size()));
+  hinge_slots_.reserve(144 * static_cast<size_t>(h.size()));
+  diag_slots_.reserve(static_cast<size_t>(ndof));
+  auto keep = [&](int r, int c) {
+    if (r >= 0 && c >= 0 && r >= c) t.emplace_back(r, c, 0.0);
+  };
   for (int i = 0; i < s.size(); ++i) visit_pairs(spring_ends(s, i), dof, keep);
   for (int e = 0; e < b.size(); ++e) visit_pairs(b.v[e], dof, keep);
   for (int e = 0; e < h.size(); ++e) visit_pairs(h.v[e], dof, keep);
@@ -70,7 +78,7 @@ void HessianAssembler::add_block(const Eigen::Matrix<double, 3 * N, 3 * N>& bloc
 
 const Eigen::SparseMatrix<double>& HessianAssembler::assemble(const Points& x, bool project) {
   std::fill(h_.valuePtr(), h_.valuePtr() + h_.nonZeros(), 0.0);
-  const Springs& s = model_.springs;
+  const Springs& s = model_->springs;
   for (int i = 0; i < s.size(); ++i) {
     const Eigen::Matrix3d k = spring_hessian_block(x.col(s.a[i]), x.col(s.b[i]), s.rest_length[i],
                                                    s.stiffness[i], project);
@@ -78,13 +86,13 @@ const Eigen::SparseMatrix<double>& HessianAssembler::assemble(const Points& x, b
     block << k, -k, -k, k;
     add_block<2>(block, &spring_slots_[static_cast<size_t>(i) * 36]);
   }
-  const Bending& b = model_.bending;
+  const Bending& b = model_->bending;
   for (int e = 0; e < b.size(); ++e) {
     const auto& v = b.v[e];
     add_block<3>(bend_hessian(x.col(v[0]), x.col(v[1]), x.col(v[2]), b.stiffness[e], project),
                  &bend_slots_[static_cast<size_t>(e) * 81]);
   }
-  const Hinges& h = model_.hinges;
+  const Hinges& h = model_->hinges;
   for (int e = 0; e < h.size(); ++e) {
     if (h.moment[e] == 0.0) continue;
     const auto& v = h.v[e];

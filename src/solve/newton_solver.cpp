@@ -2,15 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <random>
 #include <vector>
-
-#include <Eigen/CholmodSupport>
 
 #include <dlfcn.h>
 #include <omp.h>
 
 #include "membra/model/forces.hpp"
+#include "membra/solve/newton_workspace.hpp"
 #include "membra/solve/rigid_gauge.hpp"
 
 namespace membra {
@@ -29,8 +30,6 @@ void single_threaded_blas() {
   }();
   (void)once;
 }
-
-using Cholesky = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>;
 
 // Numbers the free coordinates into `dof` (-1: pinned, held by the gauge, or a z coordinate of a
 // plane-stress solve) and returns how many there are.
@@ -63,16 +62,17 @@ Eigen::VectorXd shift_metric(const HessianAssembler& h, double& floor) {
 class Newton {
  public:
   Newton(const Model& model, Points& x, const std::vector<int>& dof, int ndof,
-         const NewtonOptions& o, SolveReport& r)
+         const NewtonOptions& o, SolveReport& r, NewtonWorkspace& ws)
       : model_(model),
         x_(x),
         dof_(dof),
         ndof_(ndof),
         o_(o),
         r_(r),
-        exact_(model, dof, ndof),
-        projected_(model, dof, ndof) {
-    llt_.cholmod().print = 0;  // "not positive definite" is an expected answer here
+        exact_(ws.exact),
+        projected_(ws.projected),
+        llt_(ws.llt),
+        analysed_(ws.analysed) {
     double sum = 0.0;
     for (double l : model.springs.rest_length) sum += l;
     length_ = model.springs.size() > 0 ? sum / model.springs.size() : 1.0;
@@ -99,9 +99,9 @@ class Newton {
   int ndof_;
   const NewtonOptions& o_;
   SolveReport& r_;
-  HessianAssembler exact_, projected_;
-  Cholesky llt_;
-  bool analysed_ = false;
+  HessianAssembler &exact_, &projected_;  // the workspace's
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>& llt_;
+  bool& analysed_;
   Points f_;
   double energy_ = 0.0;
   double mu_ = 1e-8;       // shift of the projected matrix, in units of its diagonal
@@ -372,6 +372,10 @@ void Newton::run(const Stopwatch& clock) {
 
 }  // namespace
 
+std::shared_ptr<NewtonCache> make_newton_cache() {
+  return std::make_shared<NewtonCache>();
+}
+
 SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& o) {
   const Stopwatch clock;
   single_threaded_blas();
@@ -398,7 +402,19 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
     r.wall_seconds = clock.seconds();
     return r;
   }
-  Newton newton(m, x, dof, ndof, o, r);
+  // The cache's workspace when no other solve holds it and it fits this sheet; else a new one,
+  // kept in the cache (when free) for the next solve.
+  std::unique_lock<std::mutex> lock;
+  if (o.cache) lock = std::unique_lock<std::mutex>(o.cache->in_use, std::try_to_lock);
+  std::unique_ptr<NewtonWorkspace> own;
+  std::unique_ptr<NewtonWorkspace>& ws = lock.owns_lock() ? o.cache->workspace : own;
+  if (ws && ws->fits(m, dof)) {
+    ws->bind(m);
+  } else {
+    ws = std::make_unique<NewtonWorkspace>(m, dof, ndof);
+    ++r.setups;
+  }
+  Newton newton(m, x, dof, ndof, o, r, *ws);
   newton.run(clock);
   state.x = gauged ? Points(gauge.rotation.transpose() * x) : x;
   state.v.setZero(3, n);

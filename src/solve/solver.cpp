@@ -77,6 +77,7 @@ SolveReport solve_with(Solver solver, const Model& model, State& state, const So
       o.max_iterations = in.newton_iterations;
       o.max_seconds = in.max_seconds;
       o.progress = in.progress;
+      o.cache = in.newton_cache;
       return solve_newton(model, state, o);
     }
     case Solver::rk4:

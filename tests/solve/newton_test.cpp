@@ -115,6 +115,46 @@ TEST_P(NewtonGauge, ReleasedStripCurlsToTimoshenkoInAnyOrientation) {
 
 INSTANTIATE_TEST_SUITE_P(Orientations, NewtonGauge, ::testing::Values(0.0, 90.0, 30.0, 45.0));
 
+// A path's increments solved with a NewtonCache (a path's setup kept from one solve to the
+// next) end exactly where they end without one, bit for bit, with fewer setups; a model with
+// other elements is set up anew.
+TEST(Newton, ACacheKeepsTheSetupNotTheResults) {
+  Membrane m = make_membrane(build_sheet({0.1, 0.01, 41, 5}, SheetOptions{}));
+  stretch_frame(m, 1.5, 1.0);
+  impregnate(m, make_polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}), epoxy(), +1, true);
+  begin_release(m);
+  const State start = m.state;
+  NewtonOptions o;
+  o.force_scale = m.sheet.stiffness.stretch * m.sheet.grid.hx();
+  long setups[2] = {0, 0}, iterations[2] = {0, 0};
+  Points end[2];
+  for (const int cached : {0, 1}) {
+    m.state = start;
+    o.cache = cached ? make_newton_cache() : nullptr;
+    for (int k = 1; k <= 5; ++k) {
+      set_release_level(m, 1.0 - k / 5.0);
+      const SolveReport r = solve_newton(m.sheet.model, m.state, o);
+      ASSERT_TRUE(r.converged) << r.message;
+      setups[cached] += r.setups;
+      iterations[cached] += r.iterations;
+    }
+    end[cached] = m.state.x;
+  }
+  EXPECT_EQ(setups[0], 5);
+  EXPECT_LT(setups[1], 5);
+  EXPECT_GE(setups[1], 1);
+  EXPECT_EQ(iterations[0], iterations[1]);
+  EXPECT_TRUE(end[0] == end[1]) << "largest difference " << (end[0] - end[1]).cwiseAbs().maxCoeff();
+  // Other elements (a spring fewer): the cached setup does not fit and is replaced.
+  Model fewer = m.sheet.model;
+  std::vector<bool> keep(static_cast<size_t>(fewer.springs.size()), true);
+  keep.back() = false;
+  fewer.springs.filter(keep);
+  State s = m.state;
+  EXPECT_EQ(solve_newton(fewer, s, o).setups, 1);
+  EXPECT_EQ(solve_newton(fewer, s, o).setups, 0);
+}
+
 // A square and a disk with a stiff disc in the middle, stretched biaxially and released (free,
 // so held by the gauge; both perturbed alike, 0.1 mm, seed 1): Newton and the static solver end
 // in the same buckled form (the energy within

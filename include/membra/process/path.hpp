@@ -6,12 +6,14 @@
 // The CLI's runner follows a path to the end at once; the viewer drives the same path in time
 // slices.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "membra/process/prepare.hpp"
 #include "membra/process/run_result.hpp"
 #include "membra/process/scene.hpp"
+#include "membra/solve/solver.hpp"
 
 namespace membra {
 
@@ -36,11 +38,13 @@ struct FrameRecorder {
 // Solves for equilibrium (or steps in time) with the scene's solver. `tolerance` < 0: the
 // scene's. Frames are recorded during time stepping when `recorder` is given. `ramp` (time
 // stepping with simulation.ramp_seconds > 0): the path whose change is applied over that time,
-// set at every check, the run not ending at rest before the ramp does.
+// set at every check, the run not ending at rest before the ramp does. `newton_cache`: Newton's
+// setup kept from the last solve of this sheet (solve/newton_workspace.hpp).
 SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& s,
                              const std::string& stage, const ProgressFn& progress,
                              FrameRecorder* recorder = nullptr, double tolerance = -1.0,
-                             const Path* ramp = nullptr);
+                             const Path* ramp = nullptr,
+                             std::shared_ptr<NewtonCache> newton_cache = nullptr);
 
 // Follows `path` to its end: with an equilibrium solver, set(k / n) and a solve for k = 1..n
 // (a frame recorded after each); with time stepping, set(1) and one run of dynamics (frames along

@@ -17,6 +17,8 @@ class HessianAssembler {
   // dof[3 p + c] is the free coordinate number of coordinate c of particle p, or -1 when it is
   // held (pinned, or fixed by the gauge); ndof free coordinates in all.
   HessianAssembler(const Model& model, const std::vector<int>& dof, int ndof);
+  // Reads `model` from now on: another model with the same elements (the pattern is kept).
+  void bind(const Model& model) { model_ = &model; }
 
   // Assembles the Hessian at x (N/m): exact, or with `project` every element's Hessian replaced
   // by the closest positive semi-definite matrix (so the sum is positive semi-definite).
@@ -34,7 +36,7 @@ class HessianAssembler {
   template <int N>
   void add_block(const Eigen::Matrix<double, 3 * N, 3 * N>& block, const int* slot);
 
-  const Model& model_;
+  const Model* model_;
   Eigen::SparseMatrix<double> h_;
   std::vector<int> spring_slots_, bend_slots_, hinge_slots_, diag_slots_;
 };

@@ -12,12 +12,15 @@
 // positive definite, so a saddle is never reported as an equilibrium. A sheet with no pins is
 // held by a gauge that removes exactly its rigid motions (rigid_gauge.hpp). docs/solver.md.
 #include <functional>
+#include <memory>
 
 #include "membra/model/model.hpp"
 #include "membra/solve/hessian_assembler.hpp"
 #include "membra/solve/solve_report.hpp"
 
 namespace membra {
+
+struct NewtonCache;  // newton_workspace.hpp
 
 struct NewtonOptions {
   double tolerance = 1e-6;   // converged when max |static force| <= tolerance x force_scale
@@ -31,10 +34,16 @@ struct NewtonOptions {
   // (the solver "ptc"; measured against Newton in docs/performance.md).
   bool continuation = false;
   std::function<void(const Progress&)> progress;
+  // Keeps the sparsity pattern and symbolic analysis for the next solve of the same sheet (the
+  // next increment of a path); none: every solve sets up its own.
+  std::shared_ptr<NewtonCache> cache;
 };
 
 // Moves the free particles of `state` to a nearby stable equilibrium (velocities set to zero).
 // Never throws on failure: the report says what happened.
 SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& options);
+
+// An empty cache for NewtonOptions::cache (its type is complete only where CHOLMOD is seen).
+std::shared_ptr<NewtonCache> make_newton_cache();
 
 }  // namespace membra

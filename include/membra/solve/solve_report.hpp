@@ -17,6 +17,7 @@ struct SolveReport {
   long iterations = 0;                // time steps or solver iterations taken
   long force_passes = 0;              // full force evaluations
   long factorizations = 0;            // newton: sparse Cholesky factorizations
+  long setups = 0;                    // newton: patterns and symbolic analyses set up
   long negative_curvature_steps = 0;  // newton: steps taken along negative curvature (saddles)
   long increments = 0;                // path increments solved (a retried one counts once)
   long increments_halved = 0;         // newton: increments that failed and were taken in halves

@@ -4,6 +4,7 @@
 // estimate, the design, the viewer and `membra bench` all go through it, so a new solver is added
 // here and nowhere else (docs/architecture.md, "Adding a solver").
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,6 +14,8 @@
 #include "membra/solve/solve_report.hpp"
 
 namespace membra {
+
+struct NewtonCache;  // newton_workspace.hpp
 
 enum class Solver {
   static_fire,       // "static": FIRE on stiffness-scaled masses (static_solver.hpp)
@@ -56,6 +59,7 @@ struct SolverSettings {
   double max_seconds = 0.0;         // wall-time budget (0: none)
   std::function<void(const Progress&)> progress;
   std::function<void(const State&, long step)> on_check;  // time stepping: e.g. frames
+  std::shared_ptr<NewtonCache> newton_cache;  // newton: setup kept between solves (may be null)
 };
 
 // Solves with `solver` from `state` (equilibrium solvers: to a nearby equilibrium; time
