@@ -131,8 +131,9 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
   const int full = 8, units = full * n;
   int at = 0, step = full, last_step = 0;
   Points motion;  // the equilibrium's change over the last accepted increment
-  // Every increment solves the same sheet: Newton sets up its pattern and analysis once (its
-  // cost exceeds a factorization's at 64^2; docs/solver.md), and frees them with the path.
+  // Every increment solves the same sheet: Newton keeps its pattern and analysis from one to the
+  // next (at 128^2 about a factorization's cost; docs/solver.md), and frees them
+  // with the path.
   const auto cache = newton ? make_newton_cache() : nullptr;
   while (at < units && !total.diverged) {
     const int next = std::min(units, at + step);

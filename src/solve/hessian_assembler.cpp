@@ -33,11 +33,12 @@ HessianAssembler::HessianAssembler(const Model& model, const std::vector<int>& d
   const Springs& s = model.springs;
   const Bending& b = model.bending;
   const Hinges& h = model.hinges;
-  // Sized up front: growing vectors of millions of entries cost more than filling them.
-  const size_t entries = 36 * static_cast<size_t>(s.size()) + 81 * static_cast<size_t>(b.size()) +
-                         144 * static_cast<size_t>(h.size());
+  // Sized up front: growing vectors of millions of entries cost more than filling them. The
+  // pattern keeps an element's lower triangle (3n (3n + 1) / 2 of its (3n)^2 entries).
+  const size_t lower = 21 * static_cast<size_t>(s.size()) + 45 * static_cast<size_t>(b.size()) +
+                       78 * static_cast<size_t>(h.size());
   std::vector<Eigen::Triplet<double>> t;
-  t.reserve(entries + static_cast<size_t>(ndof));
+  t.reserve(lower + static_cast<size_t>(ndof));
   spring_slots_.reserve(36 * static_cast<size_t>(s.size()));
   bend_slots_.reserve(81 * static_cast<size_t>(b.size()));
   hinge_slots_.reserve(144 * static_cast<size_t>(h.size()));

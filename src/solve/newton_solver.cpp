@@ -411,6 +411,7 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   if (ws && ws->fits(m, dof)) {
     ws->bind(m);
   } else {
+    ws.reset();  // the old factor and Hessians go before the new ones are built
     ws = std::make_unique<NewtonWorkspace>(m, dof, ndof);
     ++r.setups;
   }

@@ -13,9 +13,10 @@
 #include "membra/process/prepare.hpp"
 #include "membra/process/run_result.hpp"
 #include "membra/process/scene.hpp"
-#include "membra/solve/solver.hpp"
 
 namespace membra {
+
+struct NewtonCache;  // solve/newton_workspace.hpp
 
 struct Path {
   enum class Kind {

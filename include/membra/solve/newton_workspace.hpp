@@ -1,10 +1,10 @@
 #pragma once
 // What a Newton solve sets up before its first factorization: the Hessians' sparsity pattern
 // (exact and projected) and CHOLMOD's symbolic analysis (fill-reducing ordering, supernodes).
-// At 64^2 it costs more than a factorization, and a path solves the same sheet increment after
-// increment, so a NewtonCache keeps it for the next solve (docs/solver.md). A solve reuses it only
-// when the model's elements and the free coordinates are exactly its own, so the factorizations,
-// and the results, are those of a fresh setup, bit for bit.
+// At 128^2 it costs about as much as a factorization, and a path solves the same sheet increment
+// after increment, so a NewtonCache keeps it for the next solve (docs/solver.md). A solve reuses
+// it only when the model's elements and the free coordinates are exactly its own, so the
+// factorizations, and the results, are those of a fresh setup, bit for bit.
 #include <array>
 #include <memory>
 #include <mutex>
@@ -43,7 +43,6 @@ struct NewtonWorkspace {
 struct NewtonCache {
   std::mutex in_use;
   std::unique_ptr<NewtonWorkspace> workspace;
-  long reuses = 0;  // solves that found a workspace that fits
 };
 
 }  // namespace membra
