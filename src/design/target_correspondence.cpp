@@ -40,6 +40,7 @@ class TargetMap {
       return;
     }
     uv_ = conformal_flattening(target.x, target.triangles);
+    uv_locator_.emplace(uv_, target.triangles);
     const Vec2 lo = uv_.rowwise().minCoeff(), hi = uv_.rowwise().maxCoeff();
     uv_centre_ = 0.5 * (lo + hi);
     scale_ = std::max(hi.x() - lo.x(), hi.y() - lo.y()) / sheet_.extent;
@@ -55,6 +56,12 @@ class TargetMap {
   // The surface point whose flat image is q: by the barycentric coordinates of the triangle that
   // holds q, or beyond the flattening's edge, of the nearest one's (extended linearly).
   Vec3 on_surface(const Vec2& q) const {
+    // The first triangle that holds q is among the locator's candidates, in the same order.
+    for (int k : uv_locator_->candidates(q)) {
+      const Triangle& t = target_.triangles[static_cast<size_t>(k)];
+      const auto w = barycentric(uv_.col(t[0]), uv_.col(t[1]), uv_.col(t[2]), q);
+      if (w && w->minCoeff() >= 0.0) return surface_point(t, *w);
+    }
     double best = std::numeric_limits<double>::infinity();
     Vec3 w_best = Vec3(1.0, 0.0, 0.0);
     const Triangle* t_best = &target_.triangles.front();
@@ -65,9 +72,11 @@ class TargetMap {
       if (outside < best) best = outside, w_best = *w, t_best = &t;
       if (outside == 0.0) break;
     }
-    const Triangle& t = *t_best;
-    return w_best[0] * target_.x.col(t[0]) + w_best[1] * target_.x.col(t[1]) +
-           w_best[2] * target_.x.col(t[2]);
+    return surface_point(*t_best, w_best);
+  }
+
+  Vec3 surface_point(const Triangle& t, const Vec3& w) const {
+    return w[0] * target_.x.col(t[0]) + w[1] * target_.x.col(t[1]) + w[2] * target_.x.col(t[2]);
   }
 
   const TargetSurface& target_;
@@ -75,6 +84,7 @@ class TargetMap {
   Placement sheet_;
   double scale_ = 1.0;
   Eigen::Matrix2Xd uv_;
+  std::optional<TriangleLocator> uv_locator_;
   Vec2 uv_centre_ = Vec2::Zero();
 };
 
@@ -82,12 +92,21 @@ class TargetMap {
 
 double target_height(const TargetSurface& target, const Vec2& p) {
   const Points& x = target.x;
-  for (const Triangle& t : target.triangles) {
+  // The first triangle (in the mesh's order) that holds p; the locator's candidates are in that
+  // order and include every triangle that can hold p, so it finds the same one.
+  const auto height_in = [&](const Triangle& t) -> std::optional<double> {
     const auto w =
         barycentric(x.col(t[0]).head<2>(), x.col(t[1]).head<2>(), x.col(t[2]).head<2>(), p);
     constexpr double eps = 1e-9;
-    if (!w || w->minCoeff() < -eps) continue;
+    if (!w || w->minCoeff() < -eps) return std::nullopt;
     return (*w)[0] * x(2, t[0]) + (*w)[1] * x(2, t[1]) + (*w)[2] * x(2, t[2]);
+  };
+  if (target.locator) {
+    for (int k : target.locator->candidates(p))
+      if (const auto z = height_in(target.triangles[static_cast<size_t>(k)])) return *z;
+  } else {
+    for (const Triangle& t : target.triangles)
+      if (const auto z = height_in(t)) return *z;
   }
   Eigen::Index nearest = 0;
   (x.topRows<2>().colwise() - p).colwise().squaredNorm().minCoeff(&nearest);

@@ -135,6 +135,7 @@ TargetSurface make_target(const TargetSpec& spec) {
   // the same error look 30 % smaller), the OBJ's larger footprint extent.
   t.diameter = spec.kind == "obj" ? std::max(hi.x() - lo.x(), hi.y() - lo.y()) : s;
   t.area = mesh_area(t.x, t.triangles);
+  t.locator = std::make_shared<const TriangleLocator>(t.x.topRows<2>(), t.triangles);
   return t;
 }
 

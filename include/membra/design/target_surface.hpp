@@ -1,10 +1,12 @@
 #pragma once
 // The surfaces inverse design aims at: analytic patches (spherical cap, saddle, cylinder, a
 // height-field formula) or an OBJ mesh, as a triangle mesh centred on the origin, z up.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "membra/core/vec.hpp"
+#include "membra/geometry/triangle_locator.hpp"
 #include "membra/geometry/triangulation.hpp"
 
 namespace membra {
@@ -27,6 +29,9 @@ struct TargetSurface {
   bool disk = false;      // the footprint is a disk (else a square, or the OBJ's own)
   double diameter = 0.0;  // m: the error's unit: cap diameter, square side, OBJ's larger extent
   double area = 0.0;      // m^2, of the surface
+  // Which triangles hold a footprint point (make_target builds it; without one, look-ups scan
+  // every triangle).
+  std::shared_ptr<const TriangleLocator> locator;
 };
 
 // Builds the target. Throws std::invalid_argument naming what is wrong (a cap higher than its
