@@ -91,6 +91,7 @@ class TargetMap {
 }  // namespace
 
 double target_height(const TargetSurface& target, const Vec2& p) {
+  if (!p.allFinite()) return std::numeric_limits<double>::quiet_NaN();  // as a scan would
   const Points& x = target.x;
   // The first triangle (in the mesh's order) that holds p; the locator's candidates are in that
   // order and include every triangle that can hold p, so it finds the same one.

@@ -5,9 +5,11 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "membra/design/shape_distance.hpp"
 #include "membra/design/stencil_layout.hpp"
+#include "membra/design/target_correspondence.hpp"
 #include "membra/design/target_surface.hpp"
 
 namespace membra {
@@ -57,6 +59,44 @@ TEST(TargetSurface, BadTargetsAreRefused) {
   EXPECT_THROW(make_target(s), std::invalid_argument);
   s.kind = "torus";
   EXPECT_THROW(make_target(s), std::invalid_argument);
+}
+
+// An L-shaped OBJ target (a grid of 20 x 20 cells without its upper right quarter): heights
+// looked up through the target's triangle locator are those a scan of every triangle gives, bit
+// for bit, on the mesh, in the notch, outside it, on vertices and edges, and just off its rim.
+TEST(TargetSurface, HeightsThroughTheLocatorAreTheScansHeights) {
+  TargetSpec s;
+  s.kind = "obj";
+  const int n = 21;
+  s.obj_x.resize(3, n * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      s.obj_x.col(j * n + i) = Vec3(0.005 * i, 0.005 * j, 0.01 * std::sin(0.3 * i + 0.2 * j));
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      if (i >= 10 && j >= 10) continue;  // the notch
+      const int a = j * n + i;
+      s.obj_triangles.push_back({a, a + 1, a + n + 1});
+      s.obj_triangles.push_back({a, a + n + 1, a + n});
+    }
+  const TargetSurface located = make_target(s);
+  ASSERT_TRUE(located.locator);
+  TargetSurface scanned = located;
+  scanned.locator = nullptr;
+  std::vector<Vec2> points;
+  for (int j = -3; j <= 2 * n + 3; ++j)
+    for (int i = -3; i <= 2 * n + 3; ++i)  // vertices, edge midpoints, cell centres, outside
+      points.emplace_back(0.0025 * i - 0.05, 0.0025 * j - 0.05);
+  for (const double off : {-1e-11, 1e-11, 1e-7})  // just inside and outside the rim
+    for (int k = 0; k <= 10; ++k) points.emplace_back(0.05 + off, 0.01 * k - 0.05);
+  points.emplace_back(std::nan(""), 0.0);
+  for (const Vec2& p : points) {
+    const double a = target_height(located, p), b = target_height(scanned, p);
+    if (std::isnan(b))
+      EXPECT_TRUE(std::isnan(a)) << p.transpose();
+    else
+      EXPECT_EQ(a, b) << p.transpose();
+  }
 }
 
 TEST(ShapeDistance, AShapeMovedRigidlyIsAtDistanceZero) {

@@ -1,5 +1,7 @@
 // The triangle locator: every triangle that holds a point is among its candidates, in the mesh's
 // order, so a look-up through it finds the same triangle as a scan of all of them.
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <random>
 
@@ -27,7 +29,7 @@ struct Mesh {
 };
 Mesh jittered_grid(int n, unsigned seed) {
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
   const double h = 0.15 / (n - 1);
   Mesh m{Eigen::Matrix2Xd(2, n * n), {}};
   for (int j = 0; j < n; ++j)
@@ -58,6 +60,12 @@ TEST(TriangleLocator, FindsTheFirstTriangleThatHoldsAPointAsAScanDoes) {
   for (Eigen::Index v = 0; v < m.xy.cols(); v += 7) points.emplace_back(m.xy.col(v));
   for (size_t t = 0; t < m.triangles.size(); t += 5)
     points.emplace_back(0.5 * (m.xy.col(m.triangles[t][0]) + m.xy.col(m.triangles[t][1])));
+  // Just outside the rim, within the callers' tolerance of a triangle or beyond it.
+  for (const double off : {1e-12, 1e-11, 1e-6})
+    for (int k = 1; k < 10; ++k) {
+      points.emplace_back(0.15 + off, 0.015 * k);
+      points.emplace_back(0.015 * k, -off);
+    }
   int inside = 0;
   for (const Vec2& p : points) {
     const auto holds = [&](int k) {
@@ -76,9 +84,28 @@ TEST(TriangleLocator, FindsTheFirstTriangleThatHoldsAPointAsAScanDoes) {
     inside += scanned.has_value();
   }
   EXPECT_GT(inside, 3000);  // most points lie on the mesh; some lie outside it
+  // The points just off the rim by 1e-12 are held (within the tolerance) by a rim triangle.
+  EXPECT_FALSE(locator.candidates(Vec2(0.15 + 1e-12, 0.0225)).empty());
   EXPECT_LT(inside, static_cast<int>(points.size()));
   // A handful of candidates per look-up, not the mesh.
   EXPECT_LT(locator.candidates(Vec2(0.07, 0.07)).size(), 20u);
+}
+
+// A fan of long slivers (a large polygon split from one corner) would fill the buckets many
+// times over: every triangle is a candidate instead, so look-ups stay right.
+TEST(TriangleLocator, ScansAFanOfSlivers) {
+  const int k = 2000;
+  Eigen::Matrix2Xd xy(2, k + 1);
+  xy.col(0) = Vec2(0.0, 0.0);
+  for (int i = 0; i < k; ++i) {
+    const double a = 0.5 * std::acos(-1.0) * i / (k - 1);
+    xy.col(i + 1) = Vec2(std::cos(a), std::sin(a));
+  }
+  std::vector<Triangle> fan;
+  for (int i = 1; i < k; ++i) fan.push_back({0, i, i + 1});
+  const TriangleLocator locator(xy, fan);
+  EXPECT_EQ(locator.candidates(Vec2(0.3, 0.3)).size(), fan.size());
+  EXPECT_TRUE(locator.candidates(Vec2(-0.5, 0.3)).empty());
 }
 
 TEST(TriangleLocator, HasNoCandidatesOutsideTheMeshOrForAnEmptyOne) {

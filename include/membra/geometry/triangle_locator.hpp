@@ -15,16 +15,20 @@ namespace membra {
 
 class TriangleLocator {
  public:
-  // xy: the vertices' plane coordinates; about two triangles per bucket.
+  // xy: the vertices' plane coordinates; about two triangles per bucket. Where buckets would not
+  // pay (coordinates that are not finite, or slivers that span much of the mesh), every triangle
+  // is a candidate everywhere.
   TriangleLocator(const Eigen::Matrix2Xd& xy, const std::vector<Triangle>& triangles);
 
-  // Every triangle that holds p (within 1e-6 of the mesh's extent), and others near it, in
-  // increasing index order; none when p lies outside the mesh's bounding box.
+  // Every triangle that holds p, or lies within 1e-6 of the mesh's extent of it (the buckets'
+  // margin, far wider than the callers' tolerance), and others near it, in increasing index
+  // order; none when p lies outside the mesh's bounding box.
   std::span<const int> candidates(const Vec2& p) const;
 
  private:
   Vec2 lo_ = Vec2::Zero(), cell_ = Vec2::Ones();
   int nx_ = 0, ny_ = 0;
+  bool scan_all_ = false;
   std::vector<int> start_, items_;  // bucket b holds items_[start_[b]] .. items_[start_[b + 1] - 1]
 };
 
