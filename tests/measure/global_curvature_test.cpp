@@ -40,6 +40,25 @@ std::pair<std::string, std::string> corrugated_forms(double sign) {
   return {classify_form(raw), classify_form(global)};
 }
 
+// On a fine grid (301^2, where a window holds thousands of particles) a bowl with short, steep
+// wrinkles (4 spacings long, across v) keeps its curvature in the global density: the angle
+// defects of a window sum to what its rim turns (Gauss-Bonnet), so the wrinkles cancel only when
+// every particle of the window is summed.
+TEST(GlobalCurvature, AFinelyWrinkledBowlOnAFineGridReadsAsTheBowl) {
+  const Sheet s = build_sheet({0.2, 0.2, 301, 301}, SheetOptions{});
+  const double r = 0.15, a = 0.2e-3, k = 2.0 * std::numbers::pi / 0.002;
+  const Points x = shaped(
+      s, [&](double u, double v) { return (u * u + v * v) / (2.0 * r) + a * std::sin(k * v); });
+  const GaussianCurvature global = global_curvature(x, s.model.reference, s.triangles);
+  std::printf("fine bowl: global +%.3f %.3f rad, total %.3f\n", global.positive, global.negative,
+              global.total);
+  EXPECT_EQ(classify_form(global), "synclastic");
+  // All of the global form's curvature is the bowl's, positive: the windows' positive part is
+  // its total (a window thinned to every other particle read +0.94 against 1.20 rad).
+  EXPECT_GT(global.negative, -0.05 * global.positive);
+  EXPECT_NEAR(global.positive, global.total, 0.05 * global.total);
+}
+
 TEST(GlobalCurvature, ACorrugatedBowlIsSynclasticAndACorrugatedSaddleAnticlastic) {
   const auto [bowl_raw, bowl_global] = corrugated_forms(+1.0);
   EXPECT_EQ(bowl_global, "synclastic");

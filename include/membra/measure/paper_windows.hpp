@@ -23,6 +23,8 @@ class PaperWindows {
   // as all of them, so on big sheets every stride-th one of a bucket is taken (index order
   // within a bucket is row order on the grid: an even thinning).
   void collect(Eigen::Index p, std::vector<Eigen::Index>& out) const;
+  // collect() takes every stride-th particle only (a big sheet).
+  bool thinned() const { return stride_ > 1; }
 
  private:
   std::pair<long, long> cell(Eigen::Index p) const;
