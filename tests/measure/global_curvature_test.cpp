@@ -52,6 +52,20 @@ TEST(GlobalCurvature, AFinelyWrinkledBowlOnAFineGridReadsAsTheBowl) {
   const GaussianCurvature global = global_curvature(x, s.model.reference, s.triangles);
   std::printf("fine bowl: global +%.3f %.3f rad, total %.3f\n", global.positive, global.negative,
               global.total);
+  {
+    const Points g = global_form(x, s.model.reference);
+    double worst = 0.0;
+    for (Eigen::Index p = 0; p < x.cols(); ++p) {
+      const double u = x(0, p) - 0.1, v = x(1, p) - 0.1;
+      if (std::abs(u) > 0.07 || std::abs(v) > 0.07) continue;
+      worst = std::max(worst, std::abs(g(2, p) - (u * u + v * v) / (2.0 * r)));
+    }
+    std::printf("fine bowl: global form off the smooth bowl by %.3g m at most\n", worst);
+    // The windows' means (thinned on this grid) are the smooth bowl's, up to the smoothing a
+    // window of radius R = 12.5 mm gives a paraboloid, R^2 / 4r: the wrinkles do not alias.
+    const double window = 0.0125;
+    EXPECT_LT(worst, 1.1 * window * window / (4.0 * r));
+  }
   EXPECT_EQ(classify_form(global), "synclastic");
   // All of the global form's curvature is the bowl's, positive: the windows' positive part is
   // its total (a window thinned to every other particle read +0.94 against 1.20 rad).
