@@ -18,7 +18,8 @@ namespace {
 // vertex counted: by rows of equal paper y, each with prefix sums along x, so a window costs a
 // binary search per row it crosses. (A window's defects sum to what its rim turns, Gauss-Bonnet,
 // so wrinkles cancel only when none is left out: thinning a window, as PaperWindows does on big
-// sheets for means, aliased with the grid and misread a wrinkled bowl at 301^2.)
+// sheets for means, aliased with the grid and misread a wrinkled bowl at 301^2.) The paper is a
+// grid: each row's particles share one y exactly.
 std::vector<double> window_densities(const Points& paper, double radius,
                                      const GaussianCurvature& k) {
   struct Row {
@@ -26,7 +27,8 @@ std::vector<double> window_densities(const Points& paper, double radius,
   };
   std::map<double, std::vector<std::pair<double, size_t>>> by_y;
   for (Eigen::Index p = 0; p < paper.cols(); ++p)
-    if (k.interior[static_cast<size_t>(p)]) by_y[paper(1, p)].push_back({paper(0, p), size_t(p)});
+    if (k.interior[static_cast<size_t>(p)])
+      by_y[paper(1, p)].push_back({paper(0, p), static_cast<size_t>(p)});
   std::vector<double> ys;
   std::vector<Row> rows;
   for (auto& [y, members] : by_y) {

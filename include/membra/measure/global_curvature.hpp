@@ -1,6 +1,7 @@
 #pragma once
 // The Gaussian curvature of the global form (shape.hpp): the angle defects of global_form, with
-// the density averaged over windows on the paper (paper_windows.hpp) twice the form's radius.
+// the density averaged over windows on the paper twice the form's radius (through
+// paper_windows.hpp on small sheets; summed by grid rows on big ones, where those thin).
 // The global form has the wrinkles finer than its window averaged out of its positions; waves
 // about as long as that window (a ring of resin squares wrinkling the rim of a bowl) survive in
 // part, with curvature of both signs in turn, and the density's average over the wider window
