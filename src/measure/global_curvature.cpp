@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
+#include "membra/measure/paper_rows.hpp"
 #include "membra/measure/paper_windows.hpp"
 #include "membra/measure/shape.hpp"
 
@@ -14,49 +13,22 @@ namespace membra {
 
 namespace {
 
-// Sums of the angle defects and areas of interior vertices within `radius` on the paper, every
-// vertex counted: by rows of equal paper y, each with prefix sums along x, so a window costs a
-// binary search per row it crosses. (A window's defects sum to what its rim turns, Gauss-Bonnet,
-// so wrinkles cancel only when none is left out: thinning a window, as PaperWindows does on big
-// sheets for means, aliased with the grid and misread a wrinkled bowl at 301^2.) The paper is a
-// grid: each row's particles share one y exactly.
+// The density averaged over every interior vertex within `radius` (paper_rows.hpp). A window's
+// defects sum to what its rim turns (Gauss-Bonnet), so wrinkles cancel only when none is left
+// out: thinning a window, as PaperWindows does on big sheets, aliased with the grid and misread
+// a wrinkled bowl at 301^2.
 std::vector<double> window_densities(const Points& paper, double radius,
                                      const GaussianCurvature& k) {
-  struct Row {
-    std::vector<double> x, defect, area;  // x sorted; defect and area: prefix sums (size + 1)
-  };
-  std::map<double, std::vector<std::pair<double, size_t>>> by_y;
+  Eigen::MatrixXd values = Eigen::MatrixXd::Zero(2, paper.cols());
   for (Eigen::Index p = 0; p < paper.cols(); ++p)
     if (k.interior[static_cast<size_t>(p)])
-      by_y[paper(1, p)].push_back({paper(0, p), static_cast<size_t>(p)});
-  std::vector<double> ys;
-  std::vector<Row> rows;
-  for (auto& [y, members] : by_y) {
-    std::sort(members.begin(), members.end());
-    Row r{{}, {0.0}, {0.0}};
-    for (const auto& [x, p] : members) {
-      r.x.push_back(x);
-      r.defect.push_back(r.defect.back() + k.angle_defect[p]);
-      r.area.push_back(r.area.back() + k.area[p]);
-    }
-    ys.push_back(y);
-    rows.push_back(std::move(r));
-  }
+      values.col(p) << k.angle_defect[static_cast<size_t>(p)], k.area[static_cast<size_t>(p)];
+  const PaperRows rows(paper, values);
   std::vector<double> out(k.density.size(), 0.0);
   for (Eigen::Index p = 0; p < paper.cols(); ++p) {
     if (!k.interior[static_cast<size_t>(p)]) continue;
-    const double px = paper(0, p), py = paper(1, p);
-    double defect = 0.0, area = 0.0;
-    const auto first = std::lower_bound(ys.begin(), ys.end(), py - radius);
-    for (auto y = first; y != ys.end() && *y <= py + radius; ++y) {
-      const double dy = *y - py, w = std::sqrt(std::max(0.0, radius * radius - dy * dy));
-      const Row& r = rows[static_cast<size_t>(y - ys.begin())];
-      const auto lo = std::lower_bound(r.x.begin(), r.x.end(), px - w) - r.x.begin();
-      const auto hi = std::upper_bound(r.x.begin(), r.x.end(), px + w) - r.x.begin();
-      defect += r.defect[static_cast<size_t>(hi)] - r.defect[static_cast<size_t>(lo)];
-      area += r.area[static_cast<size_t>(hi)] - r.area[static_cast<size_t>(lo)];
-    }
-    out[static_cast<size_t>(p)] = area > 0.0 ? defect / area : 0.0;
+    const Eigen::VectorXd sum = rows.sum_within(paper.col(p).head<2>(), radius);
+    out[static_cast<size_t>(p)] = sum[1] > 0.0 ? sum[0] / sum[1] : 0.0;
   }
   return out;
 }

@@ -19,11 +19,12 @@ class PaperWindows {
  public:
   PaperWindows(const Points& paper, double radius);
   // The particles within the radius of p on the paper (p among them) into `out`, cleared first.
-  // A window holds about N pi / 256 particles; a few hundred describe its mean and plane as well
-  // as all of them, so on big sheets every stride-th one of a bucket is taken (index order
-  // within a bucket is row order on the grid: an even thinning).
+  // A window holds about N pi / 256 particles; on big sheets every stride-th one of a bucket is
+  // taken (index order within a bucket is row order on the grid).
   void collect(Eigen::Index p, std::vector<Eigen::Index>& out) const;
-  // collect() takes every stride-th particle only (a big sheet).
+  // collect() takes every stride-th particle only (a big sheet). The global form and its
+  // curvature then sum whole windows by rows instead (paper_rows.hpp): thinning aliased with
+  // the grid and moved both.
   bool thinned() const { return stride_ > 1; }
 
  private:
