@@ -15,8 +15,8 @@ namespace {
 
 // The density averaged over every interior vertex within `radius` (paper_rows.hpp). A window's
 // defects sum to what its rim turns (Gauss-Bonnet), so wrinkles cancel only when none is left
-// out: thinning a window, as PaperWindows does on big sheets, aliased with the grid and misread
-// a wrinkled bowl at 301^2.
+// out: thinning the windows of big sheets, as was done until 2026-12-05, aliased with the grid
+// and misread a wrinkled bowl at 301^2.
 std::vector<double> window_densities(const Points& paper, double radius,
                                      const GaussianCurvature& k) {
   Eigen::MatrixXd values = Eigen::MatrixXd::Zero(2, paper.cols());
@@ -40,11 +40,11 @@ void average_density_over_windows(const Points& paper, double radius, GaussianCu
     throw std::invalid_argument(
         "average_density_over_windows: one paper position per vertex "
         "and a radius > 0");
-  const PaperWindows windows(paper, radius);
-  if (windows.thinned()) {  // big sheets: every vertex summed by rows (smaller ones as before)
+  if (big_sheet(paper.cols())) {
     set_smoothed_density(k, window_densities(paper, radius, k));
     return;
   }
+  const PaperWindows windows(paper, radius);
   std::vector<double> out(k.density.size(), 0.0);
   std::vector<Eigen::Index> near;
   for (Eigen::Index p = 0; p < paper.cols(); ++p) {

@@ -35,11 +35,15 @@ double window_radius(const Points& x, const Points& paper) {
   return std::max(std::max(extent.x(), extent.y()) / 16.0, 1.75 * spacing);
 }
 
+bool big_sheet(Eigen::Index particles) {
+  // A window of radius 1/16 of the sheet holds about N pi / 256 particles; from 800 on (about
+  // 256^2), summing rows' prefix sums costs less than visiting each.
+  const double expected = static_cast<double>(particles) * std::numbers::pi / 256.0;
+  return expected / 400.0 >= 2.0;
+}
+
 PaperWindows::PaperWindows(const Points& paper, double radius)
     : paper_(paper), radius_(radius), lo_(paper.rowwise().minCoeff()) {
-  // A window of radius 1/16 of the sheet holds about N pi / 256 particles.
-  const double expected = static_cast<double>(paper.cols()) * std::numbers::pi / 256.0;
-  stride_ = std::max<size_t>(1, static_cast<size_t>(expected / 400.0));
   for (Eigen::Index p = 0; p < paper.cols(); ++p) {
     const auto [i, j] = cell(p);
     buckets_[bucket_key(i, j)].push_back(p);
@@ -60,8 +64,7 @@ void PaperWindows::collect(Eigen::Index p, std::vector<Eigen::Index>& out) const
       const auto it = buckets_.find(bucket_key(i + di, j + dj));
       if (it == buckets_.end()) continue;
       const std::vector<Eigen::Index>& bucket = it->second;
-      for (size_t k = 0; k < bucket.size(); k += stride_) {
-        const Eigen::Index q = bucket[k];
+      for (const Eigen::Index q : bucket) {
         if ((paper_.col(q) - paper_.col(p)).head<2>().squaredNorm() <= r2) out.push_back(q);
       }
     }

@@ -57,10 +57,10 @@ Vec3 linear_fit_at(const Points& x, const Points& paper, Eigen::Index p,
   return mean + b * a.inverse() * (paper.col(p).head<2>() - centre);
 }
 
-// paper_neighbourhoods from every particle of each window, for big sheets whose PaperWindows
-// are thinned (the moments of a window, summed by grid rows: paper_rows.hpp): the same linear
-// fit and fold, from sums. Thinned means had shifted the global form's rim: a wrinkled bowl's
-// total curvature read 1.20 rad at 161^2 and 321^2 but 1.43 at 513^2, windows thinned 8-fold.
+// paper_neighbourhoods from every particle of each window, for big sheets (the moments of a
+// window, summed by grid rows: paper_rows.hpp): the same linear fit and fold, from sums. Thinned
+// means had shifted the global form's rim: a wrinkled bowl's total curvature read 1.20 rad at 161^2
+// and 321^2 but 1.43 at 513^2, windows thinned 8-fold.
 Neighbourhoods neighbourhoods_by_rows(const Points& x, const Points& paper, double radius) {
   const auto n = x.cols();
   // Moments about the centroids, which keeps the sums' cancellation small.
@@ -103,8 +103,8 @@ Neighbourhoods neighbourhoods_by_rows(const Points& x, const Points& paper, doub
 
 Neighbourhoods paper_neighbourhoods(const Points& x, const Points& paper, double radius) {
   const auto n = x.cols();
+  if (big_sheet(paper.cols())) return neighbourhoods_by_rows(x, paper, radius);
   const PaperWindows windows(paper, radius);
-  if (windows.thinned()) return neighbourhoods_by_rows(x, paper, radius);
   Neighbourhoods out{Points(3, n), Eigen::VectorXd::Zero(n)};
   std::vector<Eigen::Index> near;
   for (Eigen::Index p = 0; p < n; ++p) {

@@ -15,17 +15,17 @@ namespace membra {
 // spacing equal to the radius rounds. 0 when there are no particles or `paper` does not match.
 double window_radius(const Points& x, const Points& paper);
 
+// A sheet of so many particles that its windows are summed by grid rows (paper_rows.hpp), every
+// particle counted, rather than visited one by one. (Until 2026-12-05 such windows took every
+// stride-th particle instead, which aliased with the grid and moved the global form and its
+// curvature: docs/measures.md.)
+bool big_sheet(Eigen::Index particles);
+
 class PaperWindows {
  public:
   PaperWindows(const Points& paper, double radius);
   // The particles within the radius of p on the paper (p among them) into `out`, cleared first.
-  // A window holds about N pi / 256 particles; on big sheets every stride-th one of a bucket is
-  // taken (index order within a bucket is row order on the grid).
   void collect(Eigen::Index p, std::vector<Eigen::Index>& out) const;
-  // collect() takes every stride-th particle only (a big sheet). The global form and its
-  // curvature then sum whole windows by rows instead (paper_rows.hpp): thinning aliased with
-  // the grid and moved both.
-  bool thinned() const { return stride_ > 1; }
 
  private:
   std::pair<long, long> cell(Eigen::Index p) const;
@@ -33,7 +33,6 @@ class PaperWindows {
   const Points& paper_;
   double radius_;
   Vec3 lo_;
-  size_t stride_ = 1;
   std::unordered_map<long, std::vector<Eigen::Index>> buckets_;
 };
 
