@@ -26,6 +26,17 @@ TargetSurface cap() {
   return analytic("cap", 0.16, 0.024);
 }
 
+// Six darts about the cap on a 170 mm frame stretched 1.15, at 1.2 times the deficit: the
+// layout two tests cut.
+const Box2 cap_frame{Vec2::Zero(), Vec2(0.17, 0.17)};
+DartOptions six_cap_darts() {
+  DartOptions o;
+  o.darts = 6;
+  o.scale = 1.2;
+  o.lambda = 1.15;
+  return o;
+}
+
 double sphere_radius() {
   return (0.08 * 0.08 + 0.024 * 0.024) / (2.0 * 0.024);
 }
@@ -143,11 +154,8 @@ TEST(DartLayout, EachCentresDartsStayInItsCell) {
 // and a dart is bare latex on both; the resin share counts both faces.
 TEST(DartLayout, DartsCutThroughACoatOnEitherFace) {
   const DartProfile p = dart_profile(cap());
-  const Box2 frame{Vec2::Zero(), Vec2(0.17, 0.17)};
-  DartOptions o;
-  o.darts = 6;
-  o.scale = 1.2;
-  o.lambda = 1.15;
+  const Box2& frame = cap_frame;
+  DartOptions o = six_cap_darts();
   const Stencil one = layout_darts({p}, frame, true, o);
   o.face = [](const Vec2& q) { return q.x() < 0.085 ? +1 : -1; };
   o.cell = 0.017;
@@ -223,12 +231,8 @@ TEST(DartLayout, APlaneGetsNoDarts) {
 // circle is all resin.
 TEST(DartLayout, DartsAreAsWideAsTheDeficitAsks) {
   const DartProfile p = dart_profile(cap());
-  const Box2 frame{Vec2::Zero(), Vec2(0.17, 0.17)};
-  DartOptions o;
-  o.darts = 6;
-  o.scale = 1.2;
-  o.lambda = 1.15;
-  const Stencil s = layout_darts({p}, frame, true, o);
+  const DartOptions o = six_cap_darts();
+  const Stencil s = layout_darts({p}, cap_frame, true, o);
   const Vec2 c(0.085, 0.085);
   const auto latex_share = [&](double r) {
     constexpr int n = 3600;
