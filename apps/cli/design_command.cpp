@@ -5,10 +5,10 @@
 
 #include "membra/design/design_stretch.hpp"
 #include "membra/design/design_verdict.hpp"
-#include "membra/io/calibration_store.hpp"
-#include "membra/io/design_files.hpp"
+#include "membra/output/calibration_store.hpp"
+#include "membra/output/design_files.hpp"
 #include "membra/io/design_reader.hpp"
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 #include "membra/render/design_outputs.hpp"
 
 namespace membra::cli {

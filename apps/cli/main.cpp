@@ -11,7 +11,7 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/stop_request.hpp"
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/multilevel.hpp"
 #include "membra/process/run.hpp"

@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "membra/core/input_error.hpp"
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/view/session_files.hpp"
 #include "membra/view/view_script.hpp"

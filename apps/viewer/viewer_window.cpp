@@ -17,7 +17,7 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/view/flat_view.hpp"
 #include "membra/view/picking.hpp"

@@ -4,7 +4,7 @@
 
 #include "bindings.hpp"
 #include "membra/core/input_error.hpp"
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 
 namespace membra::python {
 

@@ -9,7 +9,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
-#include "membra/io/report.hpp"
+#include "membra/output/report.hpp"
 #include "membra/measure/stress.hpp"
 #include "membra/process/run.hpp"
 #include "membra/render/run_outputs.hpp"

@@ -1,7 +1,6 @@
 #include "membra/design/shape_distance.hpp"
 
 #include <Eigen/Geometry>
-#include <Eigen/SVD>
 #include <nanoflann.hpp>
 
 #include <algorithm>
@@ -53,11 +52,8 @@ RigidMotion kabsch(const std::vector<Vec3>& p, const std::vector<Vec3>& q) {
   cq /= static_cast<double>(q.size());
   Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
   for (size_t i = 0; i < p.size(); ++i) h += (p[i] - cp) * (q[i] - cq).transpose();
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
-  d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1.0 : 1.0;
   RigidMotion m;
-  m.rotation = svd.matrixV() * d * svd.matrixU().transpose();
+  m.rotation = kabsch_rotation(h);
   m.translation = cq - m.rotation * cp;
   return m;
 }

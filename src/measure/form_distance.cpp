@@ -1,7 +1,8 @@
 #include "membra/measure/form_distance.hpp"
 
-#include <Eigen/SVD>
 #include <stdexcept>
+
+#include "membra/geometry/rigid_fit.hpp"
 
 namespace membra {
 
@@ -12,12 +13,7 @@ double form_distance(const Points& a, const Points& b, bool align) {
   if (!align) return std::sqrt((a - b).colwise().squaredNorm().sum() / n);
   const Vec3 ca = a.rowwise().mean(), cb = b.rowwise().mean();
   const Points pa = a.colwise() - ca, pb = b.colwise() - cb;
-  // Kabsch: R = V diag(1, 1, det) U^T from the SVD of the covariance, without reflections.
-  const Eigen::Matrix3d cov = pa * pb.transpose();
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(cov, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
-  d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
-  const Eigen::Matrix3d r = svd.matrixV() * d * svd.matrixU().transpose();
+  const Eigen::Matrix3d r = kabsch_rotation(pa * pb.transpose());
   return std::sqrt(((r * pa) - pb).colwise().squaredNorm().sum() / n);
 }
 

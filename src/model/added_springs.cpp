@@ -22,12 +22,6 @@ int add_springs(Membrane& m, const AddSpringsSpec& spec) {
     const double length = (x.col(sp.b[s]) - x.col(sp.a[s])).norm();
     const double rest = spec.rest_factor * length, k = spec.count * spec.stiffness;
     sp.add(sp.a[s], sp.b[s], rest, k, sp.damping[s], SpringFamily::added);
-    m.natural_length.push_back(rest);
-    m.latex_stiffness.push_back(k);
-    m.resin_fraction.push_back(0.0);
-    m.resin_stiffness.push_back(0.0);
-    m.resin_length.push_back(rest);
-    m.frame_length.push_back(rest);
     ++pairs;
   }
   return pairs * spec.count;
@@ -39,7 +33,7 @@ void set_added_springs_level(Membrane& m, int first_spring, const std::vector<do
   for (size_t i = 0; i < start_length.size(); ++i) {
     const int s = first_spring + static_cast<int>(i);
     const double rest = start_length[i] * (1.0 + level * (rest_factor - 1.0));
-    m.natural_length[s] = m.resin_length[s] = m.frame_length[s] = rest;
+    sp.natural_length[s] = sp.resin_length[s] = sp.frame_length[s] = rest;
     sp.rest_length[s] = rest;
   }
 }

@@ -3,56 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <utility>
 #include <vector>
-
-#include "membra/model/bend_kernel.hpp"
-#include "membra/model/hinge_kernel.hpp"
-#include "membra/model/spring_kernel.hpp"
 
 namespace membra {
 namespace {
-
-void add_spring_forces(const Model& model, const Points& x, const Points* v, int begin, int end,
-                       Points& f) {
-  const Springs& s = model.springs;
-  if (!v) {  // static: no damping, the lean kernel (2x faster)
-    for (int i = begin; i < end; ++i) {
-      const int a = s.a[i], b = s.b[i];
-      const Vec3 fa =
-          spring_static_force_on_a(x.col(a), x.col(b), s.rest_length[i], s.stiffness[i]);
-      f.col(a) += fa;
-      f.col(b) -= fa;
-    }
-    return;
-  }
-  for (int i = begin; i < end; ++i) {
-    const int a = s.a[i], b = s.b[i];
-    const Vec3 fa = spring_force_on_a(x.col(a), x.col(b), v->col(a), v->col(b), s.rest_length[i],
-                                      s.stiffness[i], s.damping[i]);
-    f.col(a) += fa;
-    f.col(b) -= fa;
-  }
-}
-
-void add_bending_forces(const Model& model, const Points& x, int begin, int end, Points& f) {
-  const Bending& b = model.bending;
-  for (int i = begin; i < end; ++i) {
-    const auto& v = b.v[i];
-    const BendEval e = bend_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), b.stiffness[i]);
-    for (int k = 0; k < 3; ++k) f.col(v[k]) -= e.grad[k];
-  }
-}
-
-void add_hinge_forces(const Model& model, const Points& x, int begin, int end, Points& f) {
-  const Hinges& h = model.hinges;
-  for (int i = begin; i < end; ++i) {
-    const double m = h.moment[i];
-    if (m == 0.0) continue;
-    const auto& v = h.v[i];
-    const HingeEval e = hinge_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), x.col(v[3]));
-    for (int k = 0; k < 4; ++k) f.col(v[k]) -= m * e.grad[k];
-  }
-}
 
 // The particles that the elements [begin, end) of each kind touch, as [lo, hi) (empty: lo >= hi).
 struct ParticleRange {
@@ -63,24 +18,27 @@ struct ParticleRange {
   }
 };
 
+// Chunk c of `chunks` of a set's elements.
+template <typename S>
+std::pair<int, int> chunk(const S& set, int c, int chunks) {
+  return {set.size() * c / chunks, set.size() * (c + 1) / chunks};
+}
+
 ParticleRange touched(const Model& model, int c, int chunks) {
   ParticleRange r;
-  const Springs& s = model.springs;
-  const int ns = s.size(), nb = model.bending.size(), nh = model.hinges.size();
-  for (int i = ns * c / chunks; i < ns * (c + 1) / chunks; ++i)
-    r.add(std::array<int, 2>{s.a[i], s.b[i]});
-  for (int i = nb * c / chunks; i < nb * (c + 1) / chunks; ++i) r.add(model.bending.v[i]);
-  for (int i = nh * c / chunks; i < nh * (c + 1) / chunks; ++i) r.add(model.hinges.v[i]);
+  model.for_each_set([&](const auto& set) {
+    const auto [begin, end] = chunk(set, c, chunks);
+    for (int i = begin; i < end; ++i) r.add(set.ids(i));
+  });
   return r;
 }
 
-// Springs, bending and hinges. Large sheets split the elements into a fixed number of chunks, each
-// summed into its own buffer, the buffers added in chunk order: the result is the same bit for
-// bit whatever the number of threads (and whichever thread takes which chunk). Elements are
-// numbered along the sheet, so a chunk touches a band of particles: only that band of its buffer
-// is cleared and added (the rest would add zeros), a quarter of the memory traffic.
+// Every element set's forces. Large sheets split each set's elements into a fixed number of
+// chunks, each summed into its own buffer, the buffers added in chunk order: the result is the
+// same bit for bit whatever the number of threads (and whichever thread takes which chunk).
+// Elements are numbered along the sheet, so a chunk touches a band of particles: only that band
+// of its buffer is cleared and added (the rest would add zeros), a quarter of the memory traffic.
 void add_elastic_forces(const Model& model, const Points& x, const Points* v, Points& f) {
-  const int ns = model.springs.size(), nb = model.bending.size(), nh = model.hinges.size();
   constexpr int kParallelParticles = 2000;  // below this, threads cost more than they save
   constexpr int kChunks = 4;
   if (model.num_particles() >= kParallelParticles) {
@@ -97,9 +55,10 @@ void add_elastic_forces(const Model& model, const Points& x, const Points* v, Po
       band[static_cast<size_t>(c)] = r;
       if (r.lo >= r.hi) continue;
       fc.middleCols(r.lo, r.hi - r.lo).setZero();
-      add_spring_forces(model, x, v, ns * c / kChunks, ns * (c + 1) / kChunks, fc);
-      add_bending_forces(model, x, nb * c / kChunks, nb * (c + 1) / kChunks, fc);
-      add_hinge_forces(model, x, nh * c / kChunks, nh * (c + 1) / kChunks, fc);
+      model.for_each_set([&](const auto& set) {
+        const auto [begin, end] = chunk(set, c, kChunks);
+        set.add_forces(x, v, begin, end, fc);
+      });
     }
     for (int c = 0; c < kChunks; ++c) {
       const ParticleRange& r = band[static_cast<size_t>(c)];
@@ -109,9 +68,7 @@ void add_elastic_forces(const Model& model, const Points& x, const Points* v, Po
     }
     return;
   }
-  add_spring_forces(model, x, v, 0, ns, f);
-  add_bending_forces(model, x, 0, nb, f);
-  add_hinge_forces(model, x, 0, nh, f);
+  model.for_each_set([&](const auto& set) { set.add_forces(x, v, 0, set.size(), f); });
 }
 
 void add_gravity(const Model& model, Points& f) {
@@ -137,33 +94,20 @@ void compute_static_forces(const Model& model, const Points& x, Points& f) {
   add_gravity(model, f);
 }
 
-double elastic_energy(const Model& model, const Points& x) {
-  const Springs& s = model.springs;
+double energy_of_kind(const Model& model, const Points& x, EnergyKind kind) {
   double e = 0.0;
-  for (int i = 0; i < s.size(); ++i)
-    e += spring_energy(x.col(s.a[i]), x.col(s.b[i]), s.rest_length[i], s.stiffness[i]);
+  model.for_each_set([&](const auto& set) {
+    if (set.kEnergy == kind) e += set_energy(set, x);
+  });
   return e;
+}
+
+double elastic_energy(const Model& model, const Points& x) {
+  return energy_of_kind(model, x, EnergyKind::stretching);
 }
 
 double bending_energy(const Model& model, const Points& x) {
-  const Bending& b = model.bending;
-  double e = 0.0;
-  for (int i = 0; i < b.size(); ++i) {
-    const auto& v = b.v[i];
-    e += bend_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), b.stiffness[i]).energy;
-  }
-  return e;
-}
-
-double hinge_energy(const Model& model, const Points& x) {
-  const Hinges& h = model.hinges;
-  double e = 0.0;
-  for (int i = 0; i < h.size(); ++i) {
-    if (h.moment[i] == 0.0) continue;
-    const auto& v = h.v[i];
-    e += h.moment[i] * hinge_eval(x.col(v[0]), x.col(v[1]), x.col(v[2]), x.col(v[3])).theta;
-  }
-  return e;
+  return energy_of_kind(model, x, EnergyKind::bending);
 }
 
 double gravity_energy(const Model& model, const Points& x) {
@@ -173,8 +117,9 @@ double gravity_energy(const Model& model, const Points& x) {
 }
 
 double potential_energy(const Model& model, const Points& x) {
-  return elastic_energy(model, x) + bending_energy(model, x) + hinge_energy(model, x) +
-         gravity_energy(model, x);
+  double e = 0.0;  // set by set, in their order (so the sum is the same bit for bit)
+  model.for_each_set([&](const auto& set) { e += set_energy(set, x); });
+  return e + gravity_energy(model, x);
 }
 
 double kinetic_energy(const Model& model, const Points& v) {

@@ -56,12 +56,13 @@ std::vector<double> growth_ratios(const Membrane& m, const GrowSpec& spec) {
 }
 
 void apply_growth(Membrane& m, const std::vector<double>& ratios, double exponent) {
-  for (int s = 0; s < m.sheet.model.springs.size(); ++s) {
+  Springs& sp = m.sheet.model.springs;
+  for (int s = 0; s < sp.size(); ++s) {
     if (ratios[s] == 1.0) continue;
     const double g = std::pow(ratios[s], exponent);
-    m.natural_length[s] *= g;
-    m.frame_length[s] *= g;
-    update_spring(m, s);
+    sp.natural_length[s] *= g;
+    sp.frame_length[s] *= g;
+    sp.update(s, m.release());
   }
 }
 

@@ -1,8 +1,8 @@
 #include "membra/render/design_outputs.hpp"
 
-#include "membra/io/design_files.hpp"
-#include "membra/io/report_page.hpp"
-#include "membra/io/run_files.hpp"
+#include "membra/output/design_files.hpp"
+#include "membra/output/report_page.hpp"
+#include "membra/output/run_files.hpp"
 #include "membra/render/design_pictures.hpp"
 
 namespace membra {

@@ -1,6 +1,6 @@
 #include "membra/render/run_outputs.hpp"
 
-#include "membra/io/report.hpp"
+#include "membra/output/report.hpp"
 #include "membra/render/run_pictures.hpp"
 
 namespace membra {

@@ -1,21 +1,30 @@
 #include "membra/solve/newton_workspace.hpp"
 
 namespace membra {
+namespace {
+
+// Every element's particles, set by set (with each set's size, so that sets cannot trade).
+std::vector<int> topology(const Model& model) {
+  std::vector<int> ids;
+  model.for_each_set([&](const auto& set) {
+    ids.push_back(set.size());
+    append_ids(set, ids);
+  });
+  return ids;
+}
+
+}  // namespace
 
 NewtonWorkspace::NewtonWorkspace(const Model& model, const std::vector<int>& dof, int ndof)
     : exact(model, dof, ndof),
       projected(exact),  // the same pattern: built once
       dof_(dof),
-      spring_a_(model.springs.a),
-      spring_b_(model.springs.b),
-      bending_(model.bending.v),
-      hinges_(model.hinges.v) {
+      elements_(topology(model)) {
   llt.cholmod().print = 0;  // "not positive definite" is an expected answer in Newton
 }
 
 bool NewtonWorkspace::fits(const Model& model, const std::vector<int>& dof) const {
-  return dof == dof_ && model.springs.a == spring_a_ && model.springs.b == spring_b_ &&
-         model.bending.v == bending_ && model.hinges.v == hinges_;
+  return dof == dof_ && topology(model) == elements_;
 }
 
 void NewtonWorkspace::bind(const Model& model) {

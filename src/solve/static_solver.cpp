@@ -10,27 +10,7 @@ namespace membra {
 
 std::vector<double> stiffness_scaled_masses(const Model& model, const Points& x) {
   std::vector<double> m(static_cast<size_t>(model.num_particles()), 0.0);
-  const Springs& s = model.springs;
-  for (int i = 0; i < s.size(); ++i) {
-    const double l = (x.col(s.b[i]) - x.col(s.a[i])).norm();
-    // Axial stiffness k plus the geometric (stress) stiffness |k (1 - l0/l)| across the spring.
-    const double k =
-        s.stiffness[i] * (1.0 + (l > 0.0 ? std::abs(1.0 - s.rest_length[i] / l) : 1.0));
-    m[s.a[i]] += k;
-    m[s.b[i]] += k;
-  }
-  const Bending& b = model.bending;
-  for (int i = 0; i < b.size(); ++i) {
-    // Small-angle energy c |x0 - 2 x1 + x2|^2 / L^2: Hessian row sums 8c/L^2 (ends), 16c/L^2
-    // (node).
-    const auto& v = b.v[i];
-    const double l2 = 0.25 * (x.col(v[2]) - x.col(v[0])).squaredNorm();
-    if (l2 <= 0.0) continue;
-    const double k = 8.0 * b.stiffness[i] / l2;
-    m[v[0]] += k;
-    m[v[1]] += 2.0 * k;
-    m[v[2]] += k;
-  }
+  model.for_each_set([&](const auto& set) { set.add_stiffness_estimate(x, m); });
   for (double& mi : m)
     if (!(mi > 0.0)) mi = 1.0;  // a particle with nothing attached: any mass will do
   return m;

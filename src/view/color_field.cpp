@@ -53,14 +53,15 @@ ColorField color_field(const ViewerSession& session, ColorMode mode) {
     case ColorMode::pattern: {
       f.values.assign(static_cast<size_t>(model.num_particles()), 0.0);
       const PatternPtr pending = session.resin_pattern();
-      const bool impregnated = std::any_of(m.resin_fraction.begin(), m.resin_fraction.end(),
-                                           [](double r) { return r > 0.0; });
+      const std::vector<double>& resin = model.springs.resin_fraction;
+      const bool impregnated =
+          std::any_of(resin.begin(), resin.end(), [](double r) { return r > 0.0; });
       if (impregnated) {
         std::vector<double> count(f.values.size(), 0.0);
         const Springs& s = model.springs;
         for (int i = 0; i < s.size(); ++i)
           for (int p : {s.a[i], s.b[i]}) {
-            f.values[p] += m.resin_fraction[i];
+            f.values[p] += resin[i];
             count[p] += 1.0;
           }
         for (size_t p = 0; p < f.values.size(); ++p)

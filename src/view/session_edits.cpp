@@ -137,11 +137,11 @@ std::string ViewerSession::set_parameters(const LiveParameters& p) {
   if (p.K != params_.K) {
     // Every latex spring keeps its ratio to K (shear K/2, flex, added); the resin does not change.
     const double ratio = p.K / params_.K;
-    for (double& k : m.latex_stiffness) k *= ratio;
+    for (double& k : model.springs.latex_stiffness) k *= ratio;
     m.sheet.stiffness.stretch *= ratio;
     m.sheet.stiffness.shear *= ratio;
     m.sheet.stiffness.flex *= ratio;
-    for (int s = 0; s < model.springs.size(); ++s) update_spring(m, s);
+    model.springs.update(m.release());
     prepared_.force_scale *= ratio;
     changed = true;
   }

@@ -5,7 +5,7 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/io/obj.hpp"
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 #include "membra/io/ply.hpp"
 #include "membra/io/stencil.hpp"
 #include "membra/model/pattern_outline.hpp"

@@ -2,7 +2,7 @@
 # Run as: cmake -DSOURCE_DIR=<repo> -P check_layers.cmake. The CMake targets, one per layer and
 # linked only downwards, stop a call upwards at link time; this stops an include upwards (an
 # inline function or a type) that the linker cannot see.
-set(layers core geometry model solve measure process design io render view)
+set(layers core geometry model solve measure process design io output render view)
 # Rank of each layer: a layer may include its own headers and those of lower ranks. solve and
 # measure are siblings, as are render and view.
 set(rank_core 0)
@@ -13,8 +13,9 @@ set(rank_measure 3)
 set(rank_process 4)
 set(rank_design 5)
 set(rank_io 6)
-set(rank_render 7)
-set(rank_view 7)
+set(rank_output 7)
+set(rank_render 8)
+set(rank_view 8)
 set(violations "")
 foreach(layer IN LISTS layers)
   file(GLOB_RECURSE files

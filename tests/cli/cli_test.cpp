@@ -11,7 +11,7 @@
 
 #include "test_util.hpp"
 
-#include "membra/io/report.hpp"
+#include "membra/output/report.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
 

@@ -15,7 +15,7 @@
 #include "membra/design/target_correspondence.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/measure/shape.hpp"
-#include "membra/model/springs.hpp"
+#include "membra/model/elements/springs.hpp"
 
 namespace membra {
 namespace {
@@ -103,7 +103,8 @@ TEST(ResinDensity, AUniformDensityShrinksTheSheetAsTheCompositeRuleSays) {
     const Membrane& m = problem.membrane();
     int s = 0;  // a stretch spring
     while (m.sheet.model.springs.family[s] != SpringFamily::stretch) ++s;
-    const double kl = m.latex_stiffness[s], kr = m.resin_stiffness[s];
+    const Springs& sp = m.sheet.model.springs;
+    const double kl = sp.latex_stiffness[s], kr = sp.resin_stiffness[s];
     const double share = (1.0 - rho) / 1.5 + rho * (kr + kl / 1.5) / (kr + kl);
     const Points& x = problem.positions();  // free, so turned somehow: measure edges
     EXPECT_NEAR((x.col(6) - x.col(0)).norm() / 0.1, share, 1e-6) << rho;

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "membra/design/stencil_calibration.hpp"
-#include "membra/io/calibration_store.hpp"
+#include "membra/output/calibration_store.hpp"
 #include "membra/io/design_reader.hpp"
 
 namespace membra {

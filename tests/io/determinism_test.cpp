@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "membra/io/obj.hpp"
-#include "membra/io/report.hpp"
+#include "membra/output/report.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
 

@@ -22,7 +22,8 @@ TEST(AddSprings, ShortSpringsContractTheirRegionOnly) {
   // region's edge at y = 20.5 mm lie half inside and count).
   EXPECT_EQ(added, 3 * (10 * 20 + 10 * 21));
   EXPECT_EQ(m.sheet.model.springs.size(), lattice + added / 3);
-  EXPECT_EQ(m.natural_length.size(), static_cast<size_t>(m.sheet.model.springs.size()));
+  EXPECT_EQ(m.sheet.model.springs.natural_length.size(),
+            static_cast<size_t>(m.sheet.model.springs.size()));
   for (int s = lattice; s < m.sheet.model.springs.size(); ++s) {
     EXPECT_EQ(m.sheet.model.springs.family[s], SpringFamily::added);
     EXPECT_DOUBLE_EQ(m.sheet.model.springs.stiffness[s], 3 * spec.stiffness);

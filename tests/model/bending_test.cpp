@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "membra/model/bend_kernel.hpp"
+#include "membra/model/elements/bend_kernel.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/model/sheet.hpp"
 

@@ -9,8 +9,8 @@
 #include "membra/io/scene.hpp"
 #include "membra/model/bilayer.hpp"
 #include "membra/model/cut.hpp"
+#include "membra/model/elements/hinge_kernel.hpp"
 #include "membra/model/forces.hpp"
-#include "membra/model/hinge_kernel.hpp"
 #include "membra/process/run.hpp"
 #include "membra/solve/newton_solver.hpp"
 #include "test_util.hpp"
@@ -84,7 +84,7 @@ TEST_P(HingeMoments, SumToThePlateEnergysLinearTerm) {
   const Material resin = epoxy();
   impregnate(m, all, resin, +1, true);
   EXPECT_GT(m.sheet.model.hinges.size(), 0);
-  EXPECT_EQ(hinge_energy(m.sheet.model, m.state.x), 0.0);  // no moment before the release
+  EXPECT_EQ(set_energy(m.sheet.model.hinges, m.state.x), 0.0);  // no moment before the release
   begin_release(m);
   set_release_level(m, 0.0);
   Points x = m.state.x;
@@ -99,7 +99,7 @@ TEST_P(HingeMoments, SumToThePlateEnergysLinearTerm) {
                myy = d * ((1 - nu) * ky + nu * (kx + ky));
   const double area = size * size * q.lx * q.ly * (n - 2.0) / (n - 1.0);
   const double expected = area * (mxx * q.a + myy * q.c);
-  EXPECT_NEAR(hinge_energy(m.sheet.model, x) / expected, 1.0, 2e-3);
+  EXPECT_NEAR(set_energy(m.sheet.model.hinges, x) / expected, 1.0, 2e-3);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, HingeMoments,
@@ -224,7 +224,7 @@ TEST(Bilayer, CoatsThatMeetAreSeamless) {
   const Membrane overlapping = released_coated_strip({{{-1, 90, +1}, {60, 151, +1}}});
   for (int i : {8, 20, 32})
     EXPECT_NEAR(row_curvature(overlapping, i) / row_curvature(one, i), 1.0, 1e-4);
-  for (double c : overlapping.hinge_coverage) EXPECT_LE(c, 1.0 + 1e-12);
+  for (double c : overlapping.sheet.model.hinges.coverage) EXPECT_LE(c, 1.0 + 1e-12);
 }
 
 // The scene key reaches the model: "bilayer": true bows the strip towards the resin face,
@@ -270,10 +270,10 @@ TEST(Bilayer, CutsAndHolesRemoveTheHingesTheyCross) {
   set_release_level(m, 0.0);
   auto consistent = [](const Membrane& mm) {
     const Hinges& h = mm.sheet.model.hinges;
-    EXPECT_EQ(h.size(), static_cast<int>(mm.hinge_full_moment.size()));
+    EXPECT_EQ(h.size(), static_cast<int>(h.full_moment.size()));
     for (int e = 0; e < h.size(); ++e) {
       for (int p : h.v[e]) EXPECT_LT(p, mm.sheet.model.num_particles());
-      EXPECT_EQ(h.moment[e], mm.hinge_full_moment[e]);  // released: the full moment
+      EXPECT_EQ(h.moment[e], h.full_moment[e]);  // released: the full moment
       EXPECT_NE(h.moment[e], 0.0);
     }
   };

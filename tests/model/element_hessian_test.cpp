@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "membra/model/bend_kernel.hpp"
-#include "membra/model/hinge_kernel.hpp"
-#include "membra/model/spring_kernel.hpp"
+#include "membra/model/elements/bend_kernel.hpp"
+#include "membra/model/elements/hinge_kernel.hpp"
+#include "membra/model/elements/spring_kernel.hpp"
 
 namespace membra {
 namespace {

@@ -94,14 +94,14 @@ TEST(Membrane, ResinFromBeforeAStretchStays) {
   Membrane m = small_sheet();
   stretch_frame(m, 1.5, 1.0);
   impregnate(m, make_polygon({{-1, -1}, {0.0375, -1}, {0.0375, 1}, {-1, 1}}), epoxy(), +1);
-  const std::vector<double> before = m.resin_fraction;
+  const std::vector<double> before = m.sheet.model.springs.resin_fraction;
   stretch_frame(m, 1.0, 1.2);
   // A thin band across the resin: the springs it crosses are partly in it, wholly in the first.
   impregnate(m, make_polygon({{0.01, -1}, {0.012, -1}, {0.012, 1}, {0.01, 1}}), epoxy(), +1);
   int crossed = 0;
   for (size_t i = 0; i < before.size(); ++i) {
-    EXPECT_GE(m.resin_fraction[i], before[i]) << i;
-    crossed += before[i] == 1.0 && m.resin_fraction[i] == 1.0;
+    EXPECT_GE(m.sheet.model.springs.resin_fraction[i], before[i]) << i;
+    crossed += before[i] == 1.0 && m.sheet.model.springs.resin_fraction[i] == 1.0;
   }
   EXPECT_GT(crossed, 0);
   EXPECT_EQ(m.impregnated.size(), 1u);
@@ -118,8 +118,8 @@ TEST(Membrane, ImpregnatedSpringFollowsTheCompositeRule) {
   const LatticeStiffness kr = homogenize(resin);
   for (int i = 0; i < s.size(); ++i) {
     if (s.family[i] != SpringFamily::stretch) continue;
-    const double f = m.resin_fraction[i];
-    const double kl = m.latex_stiffness[i];
+    const double f = m.sheet.model.springs.resin_fraction[i];
+    const double kl = m.sheet.model.springs.latex_stiffness[i];
     const double krs = kr.stretch * kl / m.sheet.stiffness.stretch;  // half a cell on the boundary
     const double kin = krs + kl;
     if (f == 1.0) {
@@ -127,12 +127,13 @@ TEST(Membrane, ImpregnatedSpringFollowsTheCompositeRule) {
       // natural length, weighted by stiffness.
       EXPECT_NEAR(s.stiffness[i], kin, 1e-9 * kin);
       const double l_now = (m.state.x.col(s.b[i]) - m.state.x.col(s.a[i])).norm();
-      EXPECT_NEAR(s.rest_length[i], (krs * l_now + kl * m.natural_length[i]) / kin, 1e-15);
+      EXPECT_NEAR(s.rest_length[i],
+                  (krs * l_now + kl * m.sheet.model.springs.natural_length[i]) / kin, 1e-15);
     } else if (f > 0.0) {
       EXPECT_NEAR(s.stiffness[i], 1.0 / ((1 - f) / kl + f / kin), 1e-9 * kin);
     } else {
       EXPECT_EQ(s.stiffness[i], kl);
-      EXPECT_EQ(s.rest_length[i], m.natural_length[i]);
+      EXPECT_EQ(s.rest_length[i], m.sheet.model.springs.natural_length[i]);
     }
   }
   // At the start of the release the sheet is stress-free in its stretched shape.

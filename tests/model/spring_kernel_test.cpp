@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "membra/model/elements/spring_kernel.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/model/sheet.hpp"
-#include "membra/model/spring_kernel.hpp"
 
 namespace membra {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "membra/core/stopwatch.hpp"
-#include "membra/io/report.hpp"
+#include "membra/output/report.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
 

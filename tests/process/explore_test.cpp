@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "membra/io/report.hpp"
+#include "membra/output/report.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/measure/form_distance.hpp"
 #include "membra/process/explore.hpp"

@@ -35,7 +35,7 @@ Vec2 mm(double x, double y) {
 }
 
 int resin_springs(const ViewerSession& s) {
-  const auto& f = s.membrane().resin_fraction;
+  const auto& f = s.membrane().sheet.model.springs.resin_fraction;
   return static_cast<int>(std::count_if(f.begin(), f.end(), [](double r) { return r > 0.0; }));
 }
 

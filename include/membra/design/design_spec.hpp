@@ -49,7 +49,7 @@ struct DesignSpec {
   // resin, face and bilayer; the pattern is the stencil's) and release. Made by the reader.
   Scene scene;
   // Where the adjoint method keeps stencil calibrations between designs (none: measured every
-  // time). `membra design` sets one on disk (io/calibration_store.hpp).
+  // time). `membra design` sets one on disk (output/calibration_store.hpp).
   std::shared_ptr<const CalibrationCache> calibration_cache;
 };
 

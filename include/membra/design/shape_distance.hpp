@@ -10,14 +10,9 @@
 #include <Eigen/Core>
 
 #include "membra/design/target_surface.hpp"
+#include "membra/geometry/rigid_fit.hpp"
 
 namespace membra {
-
-struct RigidMotion {
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Vec3 translation = Vec3::Zero();
-  Vec3 apply(const Vec3& p) const { return rotation * p + translation; }
-};
 
 struct ShapeError {
   double rms = 0.0;                   // m: root mean square over both directions' vertex distances

@@ -5,9 +5,9 @@
 // shorter than the sheet there pull it together and longer ones push it apart.
 #include <optional>
 
+#include "membra/model/elements/springs.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/model/pattern.hpp"
-#include "membra/model/springs.hpp"
 
 namespace membra {
 

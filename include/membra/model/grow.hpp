@@ -7,9 +7,9 @@
 #include <optional>
 #include <vector>
 
+#include "membra/model/elements/springs.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/model/pattern.hpp"
-#include "membra/model/springs.hpp"
 
 namespace membra {
 

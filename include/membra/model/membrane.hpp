@@ -12,23 +12,8 @@
 namespace membra {
 
 struct Membrane {
-  Sheet sheet;  // sheet.model's rest lengths and stiffnesses follow the process
+  Sheet sheet;  // sheet.model's element sets hold their latex and resin state (model/elements/)
   State state;
-
-  // Per spring.
-  std::vector<double> natural_length;   // latex rest length, m
-  std::vector<double> latex_stiffness;  // k of the latex alone, N/m
-  std::vector<double> resin_fraction;   // share of the spring's length inside resin, 0..1
-  std::vector<double> resin_stiffness;  // k of the resin alone, N/m
-  std::vector<double> resin_length;     // length at impregnation (the resin's rest length), m
-  std::vector<double> frame_length;     // length when the release began, m
-  // Per bending element.
-  std::vector<double> latex_bending;     // c of the latex alone, J
-  std::vector<double> resin_bending;     // c of the resin alone, J
-  std::vector<double> bending_fraction;  // share inside resin
-  // Per hinge (sheet.model.hinges): the bilayer moment once the release is complete, J/rad.
-  std::vector<double> hinge_full_moment;
-  std::vector<double> hinge_coverage;  // the share of the hinge coated so far, at most 1
 
   // The patterns impregnated since the sheet last moved (frame coordinates), all and the coats
   // on one face among them: a spring, element or hinge that two adjacent patterns share is as
@@ -41,6 +26,8 @@ struct Membrane {
   int resin_side = +1;         // +1 resin on top (z > 0 face), -1 on the bottom
   bool releasing = false;      // the release has begun: latex rest lengths follow release_level
   double release_level = 1.0;  // 1 = latex relaxed at its frame length, 0 = back to natural
+
+  ReleaseLevel release() const { return {releasing, release_level}; }
 };
 
 // Wraps a freshly built sheet (at rest, nothing pinned by the frame).
@@ -58,7 +45,7 @@ struct FrameEdges {
 // Requires lx, ly > 0. Returns the number of frame particles.
 int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges = {});
 
-// impregnate: springs and bending elements inside `pattern` (frame coordinates, evaluated at
+// impregnate: the elements of every set inside `pattern` (frame coordinates, evaluated at
 // the current positions) become a latex-resin composite whose resin part is at rest at its
 // current length. Returns the number of springs that received resin. `side` is +1 (top) or -1.
 // With `bilayer`, the resin also sits on that face only and the composite curls on release
@@ -83,7 +70,8 @@ void perturb(Membrane& m, double amplitude, std::uint64_t seed);
 // largest deflection is `amplitude` (m), plus 10 % seeded noise.
 void perturb_randomly(Membrane& m, double amplitude, std::uint64_t seed);
 
-// Rest length and stiffness of one spring from the composite rule (docs/process.md).
-void update_spring(Membrane& m, int s);
+// Rest lengths, stiffnesses and moments of every element set from its composite rule and the
+// release level (docs/process.md).
+void update_elements(Membrane& m);
 
 }  // namespace membra

@@ -1,10 +1,10 @@
 #pragma once
 // Every file of a finished design, as `membra design` and the Python module's write stage them:
-// the design's files (io/design_files.hpp), its pictures (design_pictures.hpp) and report.html.
+// the design's files (output/design_files.hpp), its pictures (design_pictures.hpp) and report.html.
 #include <string>
 
 #include "membra/design/inverse_design.hpp"
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 
 namespace membra {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "membra/design/inverse_design.hpp"
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 
 namespace membra {
 

@@ -5,8 +5,8 @@
 // so that every front end writes the same files byte for byte.
 #include <string>
 
-#include "membra/io/output_set.hpp"
-#include "membra/io/run_files.hpp"
+#include "membra/output/output_set.hpp"
+#include "membra/output/run_files.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {

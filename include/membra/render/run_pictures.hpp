@@ -4,8 +4,8 @@
 // animation frames and their contact sheet, and each explored branch's curvature.png.
 #include <string>
 
-#include "membra/io/output_set.hpp"
-#include "membra/io/run_files.hpp"
+#include "membra/output/output_set.hpp"
+#include "membra/output/run_files.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {

@@ -1,6 +1,6 @@
 #pragma once
 // The Hessian of a model's potential energy over its free coordinates, assembled from the
-// elements' analytic Hessians (spring_kernel.hpp, bend_kernel.hpp, hinge_kernel.hpp) into a
+// element sets' analytic Hessians (model/elements/) into a
 // sparse matrix whose pattern is fixed at construction: each element knows the positions of its
 // entries in the value array, so an assembly only adds numbers. Only the lower triangle is kept,
 // as the sparse Cholesky factorization reads it (docs/solver.md).
@@ -38,7 +38,8 @@ class HessianAssembler {
 
   const Model* model_;
   Eigen::SparseMatrix<double> h_;
-  std::vector<int> spring_slots_, bend_slots_, hinge_slots_, diag_slots_;
+  std::vector<std::vector<int>> slots_;  // per element set, in Model::for_each_set order
+  std::vector<int> diag_slots_;
 };
 
 // The Hessian of the potential energy at x over all 3N coordinates (pins ignored), full

@@ -5,7 +5,6 @@
 // after increment, so a NewtonCache keeps it for the next solve (docs/solver.md). A solve reuses
 // it only when the model's elements and the free coordinates are exactly its own, so the
 // factorizations, and the results, are those of a fresh setup, bit for bit.
-#include <array>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -33,9 +32,8 @@ struct NewtonWorkspace {
   bool analysed = false;  // llt's symbolic analysis is done (on the pattern of `exact`)
 
  private:
-  std::vector<int> dof_, spring_a_, spring_b_;
-  std::vector<std::array<int, 3>> bending_;
-  std::vector<std::array<int, 4>> hinges_;
+  std::vector<int> dof_;
+  std::vector<int> elements_;  // every element's particles, set by set
 };
 
 // A workspace kept between solves. A solve that finds the cache in use (another thread's solve of

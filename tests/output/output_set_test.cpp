@@ -8,7 +8,7 @@
 
 #include "test_util.hpp"
 
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 
 namespace membra {
 namespace {

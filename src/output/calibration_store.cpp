@@ -1,4 +1,4 @@
-#include "membra/io/calibration_store.hpp"
+#include "membra/output/calibration_store.hpp"
 
 #include <cmath>
 #include <cstdint>

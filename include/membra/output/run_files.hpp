@@ -3,8 +3,8 @@
 // are render/run_pictures.hpp's).
 #include <vector>
 
-#include "membra/io/output_set.hpp"
-#include "membra/io/report_page.hpp"
+#include "membra/output/output_set.hpp"
+#include "membra/output/report_page.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "membra/io/report_page.hpp"
+#include "membra/output/report_page.hpp"
 
 namespace membra {
 namespace {

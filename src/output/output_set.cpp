@@ -1,4 +1,4 @@
-#include "membra/io/output_set.hpp"
+#include "membra/output/output_set.hpp"
 
 #include <fstream>
 #include <stdexcept>

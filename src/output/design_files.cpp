@@ -1,11 +1,11 @@
-#include "membra/io/design_files.hpp"
+#include "membra/output/design_files.hpp"
 
 #include <cmath>
 
 #include "membra/core/units.hpp"
 #include "membra/design/design_verdict.hpp"
 #include "membra/io/obj.hpp"
-#include "membra/io/report.hpp"
+#include "membra/output/report.hpp"
 
 namespace membra {
 

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "membra/io/design_reader.hpp"
-#include "membra/io/output_set.hpp"
-#include "membra/io/run_files.hpp"
+#include "membra/output/output_set.hpp"
+#include "membra/output/run_files.hpp"
 
 namespace membra {
 

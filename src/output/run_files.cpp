@@ -1,4 +1,4 @@
-#include "membra/io/run_files.hpp"
+#include "membra/output/run_files.hpp"
 
 #include "membra/io/gltf.hpp"
 #include "membra/io/obj.hpp"

@@ -1,4 +1,4 @@
-#include "membra/io/report_page.hpp"
+#include "membra/output/report_page.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "membra/io/report.hpp"
+#include "membra/output/report.hpp"
 
 #include <numbers>
 
@@ -189,7 +189,8 @@ void report_levels(const RunResult& r, json& j) {
                            {"start", l.from_coarser ? "coarser grid" : "path"}});
 }
 
-json report_units() {
+// The units of the run and form keys.
+json form_units() {
   return {
       {"residual", "N"},
       {"residual_relative", "1 (residual / (k_stretch x grid spacing))"},
@@ -217,7 +218,12 @@ json report_units() {
       {"curvature.global.total", "rad (of the window-averaged global form)"},
       {"curvature.global.positive", "rad"},
       {"curvature.global.negative", "rad"},
-      {"curvature.min_density", "1/mm^2"},
+      {"curvature.min_density", "1/mm^2"}};
+}
+
+// The units of the stress, cut, stability, map and branch keys.
+json mechanics_units() {
+  return {
       {"stress.min", "MPa (spring force / (tributary width x sheet thickness); < 0 compression)"},
       {"stress.max", "MPa"},
       {"strain", "1 ((l - l0) / l0 of the springs)"},
@@ -257,6 +263,12 @@ json report_units() {
       {"branches.quadric_k2", "1/mm (as shape.quadric.k2)"},
       {"branches.releases", "which releases ended in the form (0: the scene's own imperfection)"},
       {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};
+}
+
+json report_units() {
+  json units = form_units();
+  units.update(mechanics_units());
+  return units;
 }
 
 }  // namespace

@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "membra/io/output_set.hpp"
 #include "membra/measure/colormap.hpp"
+#include "membra/output/output_set.hpp"
 
 namespace membra {
 

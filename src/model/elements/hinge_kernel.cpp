@@ -1,4 +1,4 @@
-#include "membra/model/hinge_kernel.hpp"
+#include "membra/model/elements/hinge_kernel.hpp"
 
 #include <unsupported/Eigen/AutoDiff>
 

@@ -1,4 +1,4 @@
-#include "membra/io/bench_report.hpp"
+#include "membra/output/bench_report.hpp"
 
 #include "membra/version.hpp"
 

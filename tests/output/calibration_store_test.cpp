@@ -1,4 +1,4 @@
-// Stencil calibrations on disk (io/calibration_store.hpp): a calibration is read back only for
+// Stencil calibrations on disk (output/calibration_store.hpp): a calibration is read back only for
 // exactly the inputs it was measured on, and a damaged or foreign file is measured again.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "membra/io/calibration_store.hpp"
+#include "membra/output/calibration_store.hpp"
 #include "membra/io/design_reader.hpp"
 
 namespace membra {

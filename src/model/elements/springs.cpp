@@ -1,0 +1,204 @@
+#include "membra/model/elements/springs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "membra/model/elements/spring_kernel.hpp"
+#include "membra/model/pattern.hpp"
+#include "membra/model/sheet.hpp"
+
+namespace membra {
+
+static_assert(ElementSet<Springs>);
+
+std::string_view to_string(SpringFamily f) {
+  switch (f) {
+    case SpringFamily::stretch:
+      return "stretch";
+    case SpringFamily::shear:
+      return "shear";
+    case SpringFamily::flex:
+      return "flex";
+    case SpringFamily::added:
+      return "added";
+  }
+  return "unknown";
+}
+
+int Springs::add(int pa, int pb, double l0, double k, double c, SpringFamily f, double w) {
+  a.push_back(pa);
+  b.push_back(pb);
+  rest_length.push_back(l0);
+  stiffness.push_back(k);
+  damping.push_back(c);
+  family.push_back(f);
+  width.push_back(w);
+  natural_length.push_back(l0);
+  latex_stiffness.push_back(k);
+  resin_fraction.push_back(0.0);
+  resin_stiffness.push_back(0.0);
+  resin_length.push_back(l0);
+  frame_length.push_back(l0);
+  return size() - 1;
+}
+
+void Springs::filter(const std::vector<bool>& keep) {
+  keep_where(a, keep);
+  keep_where(b, keep);
+  for (auto* v : {&rest_length, &stiffness, &damping, &width, &natural_length, &latex_stiffness,
+                  &resin_fraction, &resin_stiffness, &resin_length, &frame_length})
+    keep_where(*v, keep);
+  keep_where(family, keep);
+}
+
+void Springs::reset_material() {
+  natural_length = rest_length;
+  latex_stiffness = stiffness;
+  resin_fraction.assign(rest_length.size(), 0.0);
+  resin_stiffness.assign(rest_length.size(), 0.0);
+  resin_length = rest_length;
+  frame_length = rest_length;
+}
+
+double Springs::energy(int i, const Points& x) const {
+  return spring_energy(x.col(a[i]), x.col(b[i]), rest_length[i], stiffness[i]);
+}
+
+void Springs::add_forces(const Points& x, const Points* v, int begin, int end, Points& f) const {
+  if (!v) {  // static: no damping, the lean kernel (2x faster)
+    for (int i = begin; i < end; ++i) {
+      const int pa = a[i], pb = b[i];
+      const Vec3 fa = spring_static_force_on_a(x.col(pa), x.col(pb), rest_length[i], stiffness[i]);
+      f.col(pa) += fa;
+      f.col(pb) -= fa;
+    }
+    return;
+  }
+  for (int i = begin; i < end; ++i) {
+    const int pa = a[i], pb = b[i];
+    const Vec3 fa = spring_force_on_a(x.col(pa), x.col(pb), v->col(pa), v->col(pb), rest_length[i],
+                                      stiffness[i], damping[i]);
+    f.col(pa) += fa;
+    f.col(pb) -= fa;
+  }
+}
+
+Eigen::Matrix<double, 6, 6> Springs::hessian(int i, const Points& x, bool project) const {
+  const Eigen::Matrix3d k =
+      spring_hessian_block(x.col(a[i]), x.col(b[i]), rest_length[i], stiffness[i], project);
+  Eigen::Matrix<double, 6, 6> block;
+  block << k, -k, -k, k;
+  return block;
+}
+
+void Springs::add_stiffness_estimate(const Points& x, std::vector<double>& diag) const {
+  for (int i = 0; i < size(); ++i) {
+    const double l = (x.col(b[i]) - x.col(a[i])).norm();
+    // Axial stiffness k plus the geometric (stress) stiffness |k (1 - l0/l)| across the spring.
+    const double k = stiffness[i] * (1.0 + (l > 0.0 ? std::abs(1.0 - rest_length[i] / l) : 1.0));
+    diag[a[i]] += k;
+    diag[b[i]] += k;
+  }
+}
+
+double Springs::latex_rest(int s, const ReleaseLevel& release) const {
+  const double l_nat = natural_length[s];
+  return release.releasing ? l_nat + release.level * (frame_length[s] - l_nat) : l_nat;
+}
+
+void Springs::update(int s, const ReleaseLevel& release) {
+  if (family[s] == SpringFamily::added) {  // added springs keep what add_springs gave them
+    rest_length[s] = natural_length[s];
+    stiffness[s] = latex_stiffness[s];
+    return;
+  }
+  const double rest = latex_rest(s, release);
+  const double f = resin_fraction[s], kl = latex_stiffness[s];
+  if (f <= 0.0) {
+    rest_length[s] = rest;
+    stiffness[s] = kl;
+    return;
+  }
+  const double k_in = resin_stiffness[s] + kl;
+  const double rest_in = (resin_stiffness[s] * resin_length[s] + kl * rest) / k_in;
+  stiffness[s] = 1.0 / ((1.0 - f) / kl + f / k_in);
+  rest_length[s] = (1.0 - f) * rest + f * rest_in;
+}
+
+void Springs::update(const ReleaseLevel& release) {
+  for (int s = 0; s < size(); ++s) update(s, release);
+}
+
+SpringRate Springs::rate(int s, const ReleaseLevel& release) const {
+  const double kl = latex_stiffness[s], kr = resin_stiffness[s];
+  const double rest = latex_rest(s, release);
+  const double k_in = kr + kl;
+  const double rest_in = (kr * resin_length[s] + kl * rest) / k_in;
+  const double k = stiffness[s];
+  return {k * k * (1.0 / kl - 1.0 / k_in), rest_in - rest};
+}
+
+int Springs::impregnate(const Impregnation& at) {
+  const LatticeStiffness& kl = at.sheet.stiffness;
+  const LatticeStiffness kr = homogenize(at.resin, kl.flex > 0.0 ? kl.flex / kl.stretch : 0.0);
+  const Points& x = at.x;
+  int count = 0;
+  for (int s = 0; s < size(); ++s) {
+    if (family[s] == SpringFamily::added) continue;  // not part of the sheet
+    const Vec2 pa = x.col(a[s]).head<2>(), pb = x.col(b[s]).head<2>();
+    if (fraction_inside(at.pattern, pa, pb) <= 0.0) continue;
+    ++count;
+    // Never less than before: resin cured in an earlier state stays.
+    resin_fraction[s] = std::max(resin_fraction[s], fraction_inside(at.all, pa, pb));
+    resin_length[s] = (x.col(b[s]) - x.col(a[s])).norm();
+    // Same family and the same share of a cell as the latex spring (half on the boundary).
+    const bool shear = family[s] == SpringFamily::shear;
+    const bool flex = family[s] == SpringFamily::flex;
+    const double share = latex_stiffness[s] / (shear ? kl.shear : flex ? kl.flex : kl.stretch);
+    resin_stiffness[s] = share * (shear ? kr.shear : flex ? kr.flex : kr.stretch);
+    update(s, at.release);
+  }
+  return count;
+}
+
+void Springs::carry(const Springs& old, const Rebuild& r) {
+  using Key = std::tuple<int, int, SpringFamily>;
+  auto key = [](const GridSheet& g, const Springs& sp, int s) {
+    const auto [ia, ja] = g.node(sp.a[s]);
+    const auto [ib, jb] = g.node(sp.b[s]);
+    const int na = ja * g.nx() + ia, nb = jb * g.nx() + ib;
+    return Key{std::min(na, nb), std::max(na, nb), sp.family[s]};
+  };
+  std::map<Key, int> old_spring;
+  for (int s = 0; s < old.size(); ++s)
+    if (old.family[s] != SpringFamily::added) old_spring[key(r.old_sheet.grid, old, s)] = s;
+  std::vector<bool> keep(static_cast<size_t>(size()), false);
+  for (int s = 0; s < size(); ++s) {
+    const auto it = old_spring.find(key(r.new_sheet.grid, *this, s));
+    if (it == old_spring.end()) continue;
+    const int o = it->second;
+    keep[static_cast<size_t>(s)] = true;
+    natural_length[s] = old.natural_length[o];
+    frame_length[s] = old.frame_length[o];
+    resin_fraction[s] = old.resin_fraction[o];
+    resin_length[s] = old.resin_length[o];
+    resin_stiffness[s] = old.resin_stiffness[o] * latex_stiffness[s] / old.latex_stiffness[o];
+  }
+  filter(keep);
+  for (int s = 0; s < old.size(); ++s) {
+    if (old.family[s] != SpringFamily::added) continue;
+    const int pa = r.new_of_old[static_cast<size_t>(old.a[s])];
+    const int pb = r.new_of_old[static_cast<size_t>(old.b[s])];
+    if (pa < 0 || pb < 0) continue;
+    add(pa, pb, old.rest_length[s], old.stiffness[s], old.damping[s], SpringFamily::added,
+        old.width[s]);
+    natural_length.back() = old.natural_length[s];
+    latex_stiffness.back() = old.latex_stiffness[s];
+    resin_length.back() = old.resin_length[s];
+    frame_length.back() = old.frame_length[s];
+  }
+}
+
+}  // namespace membra
