@@ -6,6 +6,7 @@
 
 #include "membra/core/stop_request.hpp"
 #include "membra/measure/stress.hpp"
+#include "membra/process/increment_walk.hpp"
 #include "membra/solve/newton_solver.hpp"
 #include "membra/solve/solver.hpp"
 
@@ -107,66 +108,36 @@ void accumulate(SolveReport& total, const SolveReport& r) {
 
 namespace {
 
-// The label of the increment ending at t in progress lines: "release 3/10", or "release 35%"
-// between the scene's increments.
-std::string increment_stage(const std::string& name, double t, int n) {
-  const double k = t * n;
-  if (std::abs(k - std::round(k)) < 1e-9)
-    return name + " " + std::to_string(static_cast<int>(std::round(k))) + "/" + std::to_string(n);
-  return name + " " + std::to_string(static_cast<int>(std::round(100.0 * t))) + "%";
-}
-
-// Follows a gradual path with an equilibrium solver. Newton adapts its increments: one whose
-// solve does not converge is undone and taken in two halves (down to 1/8 of the scene's
-// increment), the length grows back after easy ones, and each starts from the secant predictor
-// (the last increment's motion, scaled to this one's length).
+// Follows a gradual path with an equilibrium solver, increment by increment (IncrementWalk:
+// halving, growth and the secant predictor with Newton).
 void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
                        const std::string& name, const Path& path, const ProgressFn& progress,
                        FrameRecorder& recorder, SolveReport& total) {
   const double thickness = p.membrane.sheet.material.thickness;
-  const int n = path.increments;
   const bool newton = second_order(scene.simulation.solver);
-  // Path positions in units of 1/8 of an increment, so that t = k/n exactly at the scene's
-  // increments (the same rest lengths as a fixed-increment path).
-  const int full = 8, units = full * n;
-  int at = 0, step = full, last_step = 0;
-  Points motion;  // the equilibrium's change over the last accepted increment
+  IncrementWalk walk(path, scene.simulation, newton);
   // Every increment solves the same sheet: Newton keeps its pattern and analysis from one to the
   // next (at 128^2 about a factorization's cost; docs/solver.md), and frees them
   // with the path.
   const auto cache = newton ? make_newton_cache() : nullptr;
-  while (at < units && !total.diverged) {
-    const int next = std::min(units, at + step);
-    const double t = static_cast<double>(next) / units;
-    const Points start = s.x;
-    path.set(t);
-    if (newton && motion.cols() == s.x.cols())
-      s.x += (static_cast<double>(next - at) / last_step) * motion;
-    // Intermediate increments only carry the sheet along the path: a looser tolerance there
-    // (simulation.path_tolerance) saves their slow tails; the last one is solved in full.
-    const double tolerance =
-        next == units ? scene.simulation.tolerance : scene.simulation.path_tolerance;
-    const SolveReport r = solve_scene_step(scene, p, s, increment_stage(name, t, n), progress,
-                                           nullptr, tolerance, nullptr, cache);
+  while (!walk.done() && !total.diverged) {
+    const double tolerance = walk.begin(s.x);
+    const SolveReport r = solve_scene_step(scene, p, s, walk.stage(name), progress, nullptr,
+                                           tolerance, nullptr, cache);
     if (r.out_of_time) {  // the run's budget is spent: stop here, not halve or go on
       accumulate(total, r);
       recorder.record(p.membrane.sheet.model, s.x, thickness);  // the state it stopped in
       break;
     }
-    if (newton && !r.converged && !r.diverged && step > 1) {
+    if (!r.converged && !r.diverged && walk.halve(s.x)) {
       add_work(total, r);  // its work counts; its end state does not
       ++total.increments_halved;
-      s.x = start;
-      step /= 2;
       continue;
     }
     accumulate(total, r);
     ++total.increments;
     recorder.record(p.membrane.sheet.model, s.x, thickness);
-    motion = s.x - start;
-    last_step = next - at;
-    at = next;
-    if (newton && step < full && r.iterations < 30) step = std::min(full, 2 * step);
+    walk.accept(s.x, r.iterations);
   }
 }
 

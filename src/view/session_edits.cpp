@@ -113,8 +113,7 @@ void ViewerSession::reset() {
   strokes_.clear();
   log_.clear();
   viewer_pins_.clear();
-  path_ = Path{};
-  path_done_ = 0;
+  walk_ = IncrementWalk();
   scene_pattern_used_ = false;
   queue_.clear();
   // The live parameters stay as the user set them.

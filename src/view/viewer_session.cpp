@@ -85,8 +85,7 @@ PatternPtr ViewerSession::resin_pattern() const {
 }
 
 ViewerSession::Snapshot ViewerSession::snapshot() const {
-  return {prepared_.membrane, stage_,       strokes_,           log_, path_,
-          path_done_,         viewer_pins_, scene_pattern_used_};
+  return {prepared_.membrane, stage_, strokes_, log_, walk_, viewer_pins_, scene_pattern_used_};
 }
 
 void ViewerSession::restore(const Snapshot& s) {
@@ -94,8 +93,7 @@ void ViewerSession::restore(const Snapshot& s) {
   stage_ = s.stage;
   strokes_ = s.strokes;
   log_ = s.log;
-  path_ = s.path;
-  path_done_ = s.path_done;
+  walk_ = s.walk;
   viewer_pins_ = s.viewer_pins;
   scene_pattern_used_ = s.scene_pattern_used;
   queue_.clear();
@@ -238,6 +236,9 @@ SliceReport ViewerSession::advance_slice(long max_iterations, double max_seconds
   if (mode_ == LiveMode::relax) {
     StaticOptions& o = relaxation_.options();
     o.max_seconds = max_seconds;
+    // The path's increment to its tolerance (the path tolerance but for the last), as
+    // `membra run` solves it.
+    o.tolerance = walk_.done() ? scene_.simulation.tolerance : walk_.tolerance();
     r = relaxation_.advance(model, m.state, max_iterations);
   } else {
     // Motion in time: the scene's integrator, or the paper's RK4 for an equilibrium scene.
@@ -264,12 +265,14 @@ SliceReport ViewerSession::advance_slice(long max_iterations, double max_seconds
     return rep;
   }
   if (!r.converged) return rep;
-  if (path_.kind == Path::Kind::gradual && path_done_ < path_.increments) {
+  if (!walk_.done()) {
     // The next increment of the path, as follow_path takes it.
-    ++path_done_;
-    path_.set(static_cast<double>(path_done_) / path_.increments);
-    model_changed();
-    return rep;
+    walk_.accept(m.state.x, r.iterations);
+    if (!walk_.done()) {
+      walk_.begin(m.state.x);
+      model_changed();
+      return rep;
+    }
   }
   settled_ = true;
   rep.settled = queue_.empty();
@@ -346,15 +349,16 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
 }
 
 void ViewerSession::start_path(Path path) {
-  path_ = std::move(path);
-  path_done_ = 0;
-  if (path_.kind != Path::Kind::gradual) return;
-  // The first increment at once, as follow_path takes it: the step's perturbation must still be
-  // there when the change begins, or the sheet relaxes it away and buckles on round-off.
+  walk_ = IncrementWalk();
+  if (path.kind != Path::Kind::gradual) return;
   // Live time stepping lets go at once, as `membra run` does with an integrator and no
   // ramp_seconds; the viewer does not ramp (a saved scene keeps the ramp for `membra run`).
-  path_done_ = mode_ == LiveMode::dynamics ? path_.increments : 1;
-  path_.set(static_cast<double>(path_done_) / path_.increments);
+  if (mode_ == LiveMode::dynamics) return path.set(1.0);
+  // The live relaxation is first order: no predictor or halving (IncrementWalk). The first
+  // increment at once, as follow_path takes it: the step's perturbation must still be there when
+  // the change begins, or the sheet relaxes it away and buckles on round-off.
+  walk_ = IncrementWalk(std::move(path), scene_.simulation, false);
+  walk_.begin(prepared_.membrane.state.x);
 }
 
 Scene ViewerSession::to_scene() const {

@@ -15,6 +15,7 @@
 
 #include "membra/io/scene.hpp"
 #include "membra/model/membrane.hpp"
+#include "membra/process/increment_walk.hpp"
 #include "membra/process/path.hpp"
 #include "membra/process/run.hpp"
 #include "membra/solve/static_solver.hpp"
@@ -128,8 +129,7 @@ class ViewerSession {
     Stage stage;
     std::vector<Stroke> strokes;
     std::vector<ProtocolStep> log;
-    Path path;
-    int path_done;
+    IncrementWalk walk;
     std::vector<Vec2> viewer_pins;
     bool scene_pattern_used;
   };
@@ -161,10 +161,9 @@ class ViewerSession {
   std::vector<ProtocolStep> log_;
   std::vector<Vec2> viewer_pins_;    // paper positions of particles pinned in the viewer
   bool scene_pattern_used_ = false;  // the scene's impregnate patterns have been applied
-  // The path being followed (release, grow, add_springs, curvature_map: process/path.hpp), and
-  // how many of its increments are done.
-  Path path_;
-  int path_done_ = 0;
+  // The path being followed (release, grow, add_springs, curvature_map: process/path.hpp),
+  // increment by increment as `membra run` follows it.
+  IncrementWalk walk_;
   bool settled_ = false;
   SliceReport last_slice_;
   bool editing_ = false;  // between begin_edit() and end_edit(): one snapshot in all
