@@ -9,8 +9,8 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
-#include "membra/output/report.hpp"
 #include "membra/measure/stress.hpp"
+#include "membra/output/report.hpp"
 #include "membra/process/run.hpp"
 #include "membra/render/run_outputs.hpp"
 #include "progress_bridge.hpp"
@@ -51,11 +51,8 @@ void bind_result(py::module_& m) {
       .def_property_readonly(
           "gaussian_curvature",
           [](const NativeResult& r) { return per_particle(r.run.curvature.density, 1e-6); })
-      .def_property_readonly("stress",
-                             [](const NativeResult& r) {
-                               const Model& model = r.run.prepared.membrane.sheet.model;
-                               return per_particle(vertex_stress(model, r.run.stress), 1e-6);
-                             })
+      .def_property_readonly(
+          "stress", [](const NativeResult& r) { return per_particle(r.run.vertex_stress, 1e-6); })
       .def_property_readonly(
           "report",
           [](const NativeResult& r) { return json_to_python(make_report(*r.scene, r.run)); })

@@ -50,13 +50,16 @@ PieceMap::PieceMap(const Stencil& stencil, double min_feature, const Membrane& m
     hi_.push_back(hi);
   }
   // The squares whose cell meets the element's bounding box: the only ones that can cover it.
-  auto element = [&](std::vector<Segment> segments) {
-    Vec2 lo = segments[0].a, hi = lo;
-    for (const Segment& g : segments) {
+  auto element = [&](const ResinFootprint& f) {
+    Element e;
+    if (f.count == 0) return e;
+    Vec2 lo = f.segment[0].a, hi = lo;
+    for (int k = 0; k < f.count; ++k) {
+      const auto& g = f.segment[static_cast<size_t>(k)];
+      e.segments.push_back({g.a, g.b, g.weight});
       lo = lo.cwiseMin(g.a).cwiseMin(g.b);
       hi = hi.cwiseMax(g.a).cwiseMax(g.b);
     }
-    Element e{std::move(segments), {}};
     for (size_t k = 0; k < squares_.size(); ++k) {
       const Vec2 c = squares_[k].centre, h = 0.5 * squares_[k].cell;
       if ((lo.array() <= (c + h).array()).all() && (hi.array() >= (c - h).array()).all())
@@ -64,18 +67,10 @@ PieceMap::PieceMap(const Stencil& stencil, double min_feature, const Membrane& m
     }
     return e;
   };
-  auto at = [&](int p) -> Vec2 { return frame_x.col(p).head<2>(); };
-  const Springs& sp = m.sheet.model.springs;
-  for (int s = 0; s < sp.size(); ++s) {
-    springs_.push_back(element({{at(sp.a[s]), at(sp.b[s]), 1.0}}));
-    added_.push_back(sp.family[s] == SpringFamily::added);
-  }
-  // A bending element's fraction is the mean of its two segments' (model/membrane.cpp).
-  const Bending& b = m.sheet.model.bending;
-  for (int e = 0; e < b.size(); ++e) {
-    const auto& v = b.v[e];
-    bends_.push_back(element({{at(v[0]), at(v[1]), 0.5}, {at(v[1]), at(v[2]), 0.5}}));
-  }
+  m.sheet.model.for_each_set([&](const auto& set) {
+    auto& elements = elements_.emplace_back();
+    for (int i = 0; i < set.size(); ++i) elements.push_back(element(set.footprint(i, frame_x)));
+  });
 }
 
 double PieceMap::scale(int square, const Eigen::VectorXd& t) const {
@@ -103,34 +98,32 @@ PieceMap::Coverage PieceMap::coverage(const Element& element, const Eigen::Vecto
   return out;
 }
 
-PieceMap::Coverage PieceMap::spring_coverage(int s, const Eigen::VectorXd& t) const {
-  return coverage(springs_[s], t);
-}
-
-PieceMap::Coverage PieceMap::bend_coverage(int e, const Eigen::VectorXd& t) const {
-  return coverage(bends_[e], t);
+PieceMap::Coverage PieceMap::element_coverage(size_t k, int i, const Eigen::VectorXd& t) const {
+  return coverage(elements_[k][static_cast<size_t>(i)], t);
 }
 
 void PieceMap::apply(Membrane& m, const Eigen::VectorXd& t) const {
   if (t.size() != size()) throw std::invalid_argument("one variable per free piece");
-  for (size_t s = 0; s < springs_.size(); ++s)
-    if (!added_[s])
-      set_spring_fraction(m, static_cast<int>(s), spring_coverage(static_cast<int>(s), t).fraction);
-  for (size_t e = 0; e < bends_.size(); ++e)
-    set_bend_fraction(m, static_cast<int>(e), bend_coverage(static_cast<int>(e), t).fraction);
+  size_t k = 0;
+  m.sheet.model.for_each_set([&](auto& set) {
+    const auto& elements = elements_[k++];
+    for (int i = 0; i < set.size(); ++i)
+      if (!elements[static_cast<size_t>(i)].segments.empty())
+        set.set_resin_fraction(i, coverage(elements[static_cast<size_t>(i)], t).fraction,
+                               m.release());
+  });
 }
 
 Eigen::VectorXd PieceMap::pull_back(const Membrane& m, const Eigen::VectorXd& t, const Points& x,
                                     const Points& w) const {
   const ElementRates r = element_force_sensitivity(m, x, w);
   Eigen::VectorXd out = Eigen::VectorXd::Zero(size());
-  for (size_t s = 0; s < springs_.size(); ++s)
-    if (!added_[s])
-      for (const auto& [v, d] : spring_coverage(static_cast<int>(s), t).rate)
-        out[v] += r.spring[static_cast<Eigen::Index>(s)] * d;
-  for (size_t e = 0; e < bends_.size(); ++e)
-    for (const auto& [v, d] : bend_coverage(static_cast<int>(e), t).rate)
-      out[v] += r.bend[static_cast<Eigen::Index>(e)] * d;
+  for (size_t k = 0; k < elements_.size(); ++k)
+    for (size_t i = 0; i < elements_[k].size(); ++i) {
+      if (elements_[k][i].segments.empty()) continue;
+      for (const auto& [v, d] : coverage(elements_[k][i], t).rate)
+        out[v] += r.set[k][static_cast<Eigen::Index>(i)] * d;
+    }
   return out;
 }
 

@@ -18,37 +18,36 @@ void spread(const DensityField::Weights& w, double value, Eigen::VectorXd& out) 
 }  // namespace
 
 DensitySites density_sites(const Membrane& m, const Points& x_frame, const DensityField& field) {
-  const Model& model = m.sheet.model;
   DensitySites s;
   s.cells = static_cast<int>(field.value.size());
-  const Springs& sp = model.springs;
-  s.spring.resize(static_cast<size_t>(sp.size()));
-  for (int i = 0; i < sp.size(); ++i)
-    s.spring[i] = field.weights(0.5 * (x_frame.col(sp.a[i]) + x_frame.col(sp.b[i])).head<2>());
-  s.bend.resize(static_cast<size_t>(model.bending.size()));
-  for (int e = 0; e < model.bending.size(); ++e)
-    s.bend[e] = field.weights(x_frame.col(model.bending.v[e][1]).head<2>());
+  m.sheet.model.for_each_set([&](const auto& set) {
+    auto& sites = s.set.emplace_back(static_cast<size_t>(set.size()));
+    for (int i = 0; i < set.size(); ++i) {
+      const ResinFootprint f = set.footprint(i, x_frame);
+      if (f.count > 0) sites[static_cast<size_t>(i)] = {field.weights(f.site), true};
+    }
+  });
   return s;
 }
 
 void apply_density(Membrane& m, const DensitySites& sites, const Eigen::VectorXd& rho) {
-  Model& model = m.sheet.model;
-  for (int s = 0; s < model.springs.size(); ++s) {
-    if (model.springs.family[s] == SpringFamily::added) continue;
-    set_spring_fraction(m, s, fraction(sites.spring[s], rho));
-  }
-  for (int e = 0; e < model.bending.size(); ++e)
-    set_bend_fraction(m, e, fraction(sites.bend[e], rho));
+  size_t k = 0;
+  m.sheet.model.for_each_set([&](auto& set) {
+    const auto& at = sites.set[k++];
+    for (int i = 0; i < set.size(); ++i)
+      if (at[static_cast<size_t>(i)].takes)
+        set.set_resin_fraction(i, fraction(at[static_cast<size_t>(i)].weights, rho), m.release());
+  });
 }
 
 Eigen::VectorXd density_force_sensitivity(const Membrane& m, const DensitySites& sites,
                                           const Points& x, const Points& w) {
   const ElementRates r = element_force_sensitivity(m, x, w);
   Eigen::VectorXd out = Eigen::VectorXd::Zero(sites.cells);
-  const Springs& sp = m.sheet.model.springs;
-  for (int s = 0; s < sp.size(); ++s)
-    if (sp.family[s] != SpringFamily::added) spread(sites.spring[s], r.spring[s], out);
-  for (int e = 0; e < m.sheet.model.bending.size(); ++e) spread(sites.bend[e], r.bend[e], out);
+  for (size_t k = 0; k < sites.set.size(); ++k)
+    for (size_t i = 0; i < sites.set[k].size(); ++i)
+      if (sites.set[k][i].takes)
+        spread(sites.set[k][i].weights, r.set[k][static_cast<Eigen::Index>(i)], out);
   return out;
 }
 

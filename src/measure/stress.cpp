@@ -29,14 +29,16 @@ SpringStress spring_stress(const Model& model, const Points& x, double thickness
   return r;
 }
 
-std::vector<double> vertex_stress(const Model& model, const SpringStress& s) {
-  const Springs& sp = model.springs;
+std::vector<double> vertex_stress(const Model& model, const Points& x, double thickness) {
   std::vector<double> sum(static_cast<size_t>(model.num_particles()), 0.0);
   std::vector<int> count(sum.size(), 0);
-  for (int i = 0; i < sp.size(); ++i) {
-    if (!(sp.width[i] > 0.0)) continue;
-    for (int p : {sp.a[i], sp.b[i]}) sum[p] += s.stress[i], ++count[p];
-  }
+  model.for_each_set([&](const auto& set) {
+    for (int i = 0; i < set.size(); ++i) {
+      const ElementStress e = set.stress(i, x, thickness);
+      if (!e.carries) continue;
+      for (int p : set.ids(i)) sum[p] += e.stress, ++count[p];
+    }
+  });
   for (size_t p = 0; p < sum.size(); ++p)
     if (count[p] > 0) sum[p] /= count[p];
   return sum;

@@ -81,9 +81,7 @@ void begin_release(Membrane& m) {
   m.frame.clear();
   m.impregnated.clear();
   m.coats.clear();
-  Springs& sp = model.springs;
-  for (int s = 0; s < sp.size(); ++s)
-    sp.frame_length[s] = (m.state.x.col(sp.b[s]) - m.state.x.col(sp.a[s])).norm();
+  model.for_each_set([&](auto& set) { set.begin_release(m.state.x); });
   m.releasing = true;
   set_release_level(m, 1.0);
 }

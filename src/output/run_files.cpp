@@ -11,9 +11,8 @@ namespace membra {
 
 RunColors run_colors(const RunResult& r, const PictureOptions& opts) {
   RunColors c;
-  const auto& mesh = r.prepared.membrane.sheet;
   for (double k : r.curvature.density) c.curvature.push_back(k * 1e-6);  // 1/m^2 to 1/mm^2
-  for (double sv : vertex_stress(mesh.model, r.stress)) c.stress.push_back(sv * 1e-6);
+  for (double sv : r.vertex_stress) c.stress.push_back(sv * 1e-6);
   std::tie(c.k_lo, c.k_hi) = symmetric_percentile_range(c.curvature, kCurvaturePercentile, 1e-6);
   if (opts.curvature_range.size() == 2)
     c.k_lo = opts.curvature_range[0], c.k_hi = opts.curvature_range[1];

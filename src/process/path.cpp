@@ -14,7 +14,7 @@ namespace membra {
 
 void FrameRecorder::record(const Model& m, const Points& x, double thickness) {
   if (!frames || static_cast<int>(frames->size()) >= wanted) return;
-  frames->push_back({x, vertex_stress(m, spring_stress(m, x, thickness))});
+  frames->push_back({x, vertex_stress(m, x, thickness)});
 }
 
 namespace {

@@ -33,7 +33,7 @@ ColorField color_field(const ViewerSession& session, ColorMode mode) {
   ColorField f;
   switch (mode) {
     case ColorMode::stress: {
-      f.values = vertex_stress(model, spring_stress(model, x, m.sheet.material.thickness));
+      f.values = vertex_stress(model, x, m.sheet.material.thickness);
       for (double& v : f.values) v /= units::MPa;
       std::tie(f.lo, f.hi) = symmetric_range(f.values, 1e-6);
       f.title = "spring stress";

@@ -278,7 +278,7 @@ TEST(PieceMap, CoversEachElementAsImpregnationDoesAndDifferentiatesIt) {
   int inside = 0, outside = 0, across = 0;
   const Springs& sp = model.springs;
   for (int s = 0; s < sp.size(); ++s) {
-    const PieceMap::Coverage c = pp.map->spring_coverage(s, t);
+    const PieceMap::Coverage c = pp.map->element_coverage(0, s, t);
     ASSERT_GE(c.fraction, 0.0);
     ASSERT_LE(c.fraction, 1.0);
     EXPECT_NEAR(c.fraction, fraction_inside(*stencil.pattern, at(sp.a[s]), at(sp.b[s])),
@@ -288,19 +288,19 @@ TEST(PieceMap, CoversEachElementAsImpregnationDoesAndDifferentiatesIt) {
     outside += c.fraction == 0.0;
     if (c.fraction <= 0.0 || c.fraction >= 1.0) continue;
     ++across;
-    check_rates(c,
-                [&](const Eigen::VectorXd& u) { return pp.map->spring_coverage(s, u).fraction; });
+    check_rates(
+        c, [&](const Eigen::VectorXd& u) { return pp.map->element_coverage(0, s, u).fraction; });
   }
   const Bending& b = model.bending;
   for (int e = 0; e < b.size(); ++e) {
-    const PieceMap::Coverage c = pp.map->bend_coverage(e, t);
+    const PieceMap::Coverage c = pp.map->element_coverage(1, e, t);
     const auto& v = b.v[e];
     const double sampled = 0.5 * (fraction_inside(*stencil.pattern, at(v[0]), at(v[1]), 8) +
                                   fraction_inside(*stencil.pattern, at(v[1]), at(v[2]), 8));
     EXPECT_NEAR(c.fraction, sampled, 1.0 / 8 + 1e-9) << e;
     if (c.fraction > 0.0 && c.fraction < 1.0 && e % 4 == 0)
-      check_rates(c,
-                  [&](const Eigen::VectorXd& u) { return pp.map->bend_coverage(e, u).fraction; });
+      check_rates(
+          c, [&](const Eigen::VectorXd& u) { return pp.map->element_coverage(1, e, u).fraction; });
   }
   EXPECT_GT(inside, 0);
   EXPECT_GT(outside, 0);

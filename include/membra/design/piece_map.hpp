@@ -2,9 +2,10 @@
 // Stage 3's design variables: the sizes of a stencil's pieces (design/stencil_layout.hpp). Each
 // piece that is neither a filled cell nor absent gets one variable t in [0, 1], its sides
 // running from the minimum feature (t = 0) to the cell less the minimum feature (t = 1), so
-// every value can be cut. A spring takes as its resin fraction the exact share of its segment on
-// the frame inside the pieces, a bending element the mean of its two segments' — the shares
-// that impregnation samples at 16 and 8 points (model/membrane.cpp), so that the branch followed
+// every value can be cut. An element takes as its resin fraction the exact share of its
+// footprint on the frame inside the pieces (a spring's segment, the mean of a bending element's
+// two: model/elements/) — the shares that impregnation samples at 16 and 8 points, so that the
+// branch followed
 // here is, within that sampling, the real stencil's. The share moves continuously while a
 // piece's edge crosses a segment, and jumps when the edge passes a segment parallel to it; the
 // gradient is that of the continuous part (docs/inverse_design.md, stage 3).
@@ -34,8 +35,8 @@ class PieceMap final : public ResinMap {
     double fraction = 0.0;
     std::vector<std::pair<int, double>> rate;
   };
-  Coverage spring_coverage(int s, const Eigen::VectorXd& t) const;
-  Coverage bend_coverage(int e, const Eigen::VectorXd& t) const;
+  // Element i of element set k (Model::for_each_set order: 0 springs, 1 bending).
+  Coverage element_coverage(size_t k, int i, const Eigen::VectorXd& t) const;
 
  private:
   struct Segment {
@@ -43,8 +44,8 @@ class PieceMap final : public ResinMap {
     double weight;  // its share of the element's fraction
   };
   struct Element {
-    std::vector<Segment> segments;
-    std::vector<int> near;  // the squares whose cell meets the element's bounding box
+    std::vector<Segment> segments;  // none: the design places no resin on it
+    std::vector<int> near;          // the squares whose cell meets the element's bounding box
   };
   Coverage coverage(const Element& element, const Eigen::VectorXd& t) const;
   double scale(int square, const Eigen::VectorXd& t) const;
@@ -54,8 +55,7 @@ class PieceMap final : public ResinMap {
   std::vector<int> variable_;    // per square: its variable, or -1 (a filled cell, fixed)
   std::vector<int> free_;        // per variable: its square
   std::vector<double> lo_, hi_;  // per variable: the scale at t = 0 and t = 1
-  std::vector<Element> springs_, bends_;
-  std::vector<bool> added_;  // springs not part of the sheet
+  std::vector<std::vector<Element>> elements_;  // per element set, per element
 };
 
 }  // namespace membra

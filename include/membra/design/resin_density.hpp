@@ -1,6 +1,7 @@
 #pragma once
-// Resin given by a density field instead of a stencil: every spring takes the density at its
-// midpoint as its resin fraction, every bending element the density at its middle particle, and
+// Resin given by a density field instead of a stencil: every element the design places resin on
+// takes the density at its site as its resin fraction (a spring's midpoint, a bending element's
+// middle particle: ResinFootprint, model/elements/element_set.hpp), and
 // the composite rules of the process (model/membrane.hpp) turn fractions into stiffness and rest
 // length. The membrane must have been impregnated everywhere first (so each element knows its
 // resin's stiffness and length at impregnation); the density then only sets the fractions.
@@ -16,15 +17,20 @@
 
 namespace membra {
 
-// Where each spring and bending element reads the density: bilinear weights of the cells
-// around its midpoint on the frame (positions `x_frame`, the sheet stretched on its frame).
+// Where each element reads the density: bilinear weights of the cells around its site on the
+// frame (positions `x_frame`, the sheet stretched on its frame), per element set; `takes` false
+// for an element the design places no resin on.
 struct DensitySites {
-  std::vector<DensityField::Weights> spring, bend;
+  struct Site {
+    DensityField::Weights weights;
+    bool takes = false;
+  };
+  std::vector<std::vector<Site>> set;
   int cells = 0;
 };
 DensitySites density_sites(const Membrane& m, const Points& x_frame, const DensityField& field);
 
-// Sets every spring's and bending element's resin fraction from the cell densities `rho` and
+// Sets every element's resin fraction from the cell densities `rho` and
 // updates their stiffness and rest length (at the membrane's present release level).
 void apply_density(Membrane& m, const DensitySites& sites, const Eigen::VectorXd& rho);
 

@@ -1,25 +1,24 @@
 #pragma once
-// How a design's variables place the resin: they set every spring's and bending element's resin
-// fraction, and the chain rule takes the adjoint's per-element sensitivities back to the
+// How a design's variables place the resin: they set the resin fraction of every element the
+// design places resin on (each element set says which, where it lies, and how its fraction acts:
+// model/elements/), and the chain rule takes the adjoint's per-element sensitivities back to the
 // variables. Two maps exist: a density per cell (design/resin_density.hpp, stage 2) and the sizes
 // of a stencil's pieces (design/piece_map.hpp, stage 3). The density problem
 // (design/density_problem.hpp) solves and differentiates the released equilibrium for either.
 // Both set fractions and take sensitivities per element by the functions below.
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "membra/model/membrane.hpp"
 
 namespace membra {
 
-// Sets one spring's (not an added one's) or bending element's resin fraction and the stiffness
-// and rest length that follow by the process's composite rules (model/membrane.cpp).
-void set_spring_fraction(Membrane& m, int s, double f);
-void set_bend_fraction(Membrane& m, int e, double f);
-
-// For every spring and bending element, d/df of (grad E(x) . w) in its resin fraction f: what
-// any design variable's sensitivity is made of (added springs: 0).
+// For every element of every set (in Model::for_each_set order), d/df of (grad E(x) . w) in its
+// resin fraction f: what any design variable's sensitivity is made of (0 where the design places
+// no resin).
 struct ElementRates {
-  Eigen::VectorXd spring, bend;
+  std::vector<Eigen::VectorXd> set;
 };
 ElementRates element_force_sensitivity(const Membrane& m, const Points& x, const Points& w);
 

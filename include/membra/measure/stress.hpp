@@ -1,5 +1,6 @@
 #pragma once
-// Strain, force and stress of every spring, and a per-vertex stress for pictures.
+// Strain, force and stress of every spring, and a per-vertex stress for pictures from every
+// element set's stress read-out.
 #include <vector>
 
 #include "membra/model/model.hpp"
@@ -18,7 +19,8 @@ struct SpringStress {
 // Per-spring measures at positions x for a sheet of the given thickness (m).
 SpringStress spring_stress(const Model& model, const Points& x, double thickness);
 
-// Mean stress of the springs meeting at each particle (Pa), for colouring.
-std::vector<double> vertex_stress(const Model& model, const SpringStress& s);
+// Mean stress of the elements meeting at each particle that carry one (Pa), for colouring: every
+// element set's read-out (model/elements/) at positions x for a sheet of that thickness (m).
+std::vector<double> vertex_stress(const Model& model, const Points& x, double thickness);
 
 }  // namespace membra

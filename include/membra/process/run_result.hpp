@@ -69,8 +69,9 @@ struct RunResult {
   // averaged out, so a bowl with a wrinkled rim reads as a bowl.
   GaussianCurvature curvature_global;
   std::string form_global;
-  SpringStress stress;        // per spring, for the sheet's thickness
-  std::vector<Frame> frames;  // scene.output.frames instants (dynamic solves, release path)
+  SpringStress stress;                // per spring, for the sheet's thickness
+  std::vector<double> vertex_stress;  // Pa, per particle (measure/stress.hpp), final state
+  std::vector<Frame> frames;          // scene.output.frames instants (dynamic solves, release path)
   std::vector<StressFeature> features;              // the cuts and holes, in step order
   std::vector<StressConcentration> concentrations;  // stress at each feature, final state
   std::optional<CurvatureMapResult> curvature_map;  // scenes with a curvature_map step

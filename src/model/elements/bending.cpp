@@ -77,6 +77,24 @@ double Bending::rate(int e) const {
   return c * c * (1.0 / cl - 1.0 / (cl + resin_stiffness[e]));
 }
 
+ResinFootprint Bending::footprint(int e, const Points& x) const {
+  const auto& p = v[static_cast<size_t>(e)];
+  ResinFootprint f;
+  f.count = 2;
+  f.segment[0] = {x.col(p[0]).head<2>(), x.col(p[1]).head<2>(), 0.5};
+  f.segment[1] = {x.col(p[1]).head<2>(), x.col(p[2]).head<2>(), 0.5};
+  f.site = x.col(p[1]).head<2>();
+  return f;
+}
+
+double Bending::resin_rate(int e, const Points& x, const Points& w, const ReleaseLevel&) const {
+  const auto& p = v[static_cast<size_t>(e)];
+  const BendEval unit = bend_eval(x.col(p[0]), x.col(p[1]), x.col(p[2]), 1.0);
+  double work = 0.0;
+  for (int i = 0; i < 3; ++i) work += unit.grad[i].dot(w.col(p[i]));
+  return rate(e) * work;
+}
+
 int Bending::impregnate(const Impregnation& at) {
   const Points& x = at.x;
   const double d_resin = bending_stiffness(at.resin);

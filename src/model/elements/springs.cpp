@@ -103,6 +103,17 @@ void Springs::add_stiffness_estimate(const Points& x, std::vector<double>& diag)
   }
 }
 
+ElementStress Springs::stress(int i, const Points& x, double thickness) const {
+  if (!(width[i] > 0.0)) return {};
+  if (!(thickness > 0.0)) return {true, 0.0};
+  const double l = (x.col(b[i]) - x.col(a[i])).norm();
+  return {true, stiffness[i] * (l - rest_length[i]) / (width[i] * thickness)};
+}
+
+void Springs::begin_release(const Points& x) {
+  for (int s = 0; s < size(); ++s) frame_length[s] = (x.col(b[s]) - x.col(a[s])).norm();
+}
+
 double Springs::latex_rest(int s, const ReleaseLevel& release) const {
   const double l_nat = natural_length[s];
   return release.releasing ? l_nat + release.level * (frame_length[s] - l_nat) : l_nat;
@@ -138,6 +149,32 @@ SpringRate Springs::rate(int s, const ReleaseLevel& release) const {
   const double rest_in = (kr * resin_length[s] + kl * rest) / k_in;
   const double k = stiffness[s];
   return {k * k * (1.0 / kl - 1.0 / k_in), rest_in - rest};
+}
+
+ResinFootprint Springs::footprint(int s, const Points& x) const {
+  ResinFootprint f;
+  if (family[s] == SpringFamily::added) return f;
+  f.count = 1;
+  f.segment[0] = {x.col(a[s]).head<2>(), x.col(b[s]).head<2>(), 1.0};
+  f.site = 0.5 * (x.col(a[s]) + x.col(b[s])).head<2>();
+  return f;
+}
+
+void Springs::set_resin_fraction(int s, double f, const ReleaseLevel& release) {
+  resin_fraction[s] = f;
+  update(s, release);
+}
+
+double Springs::resin_rate(int s, const Points& x, const Points& w,
+                           const ReleaseLevel& release) const {
+  if (family[s] == SpringFamily::added) return 0.0;
+  const Vec3 d = x.col(b[s]) - x.col(a[s]);
+  const double l = d.norm();
+  if (l <= 0.0) return 0.0;
+  // grad E . w = k (l - l0) dl, dl = n . (w_b - w_a); its derivative in f.
+  const double dl = d.dot(w.col(b[s]) - w.col(a[s])) / l;
+  const SpringRate r = rate(s, release);
+  return (r.dk * (l - rest_length[s]) - stiffness[s] * r.dl0) * dl;
 }
 
 int Springs::impregnate(const Impregnation& at) {

@@ -59,15 +59,23 @@ struct Bending {
   void add_forces(const Points& x, const Points* v, int begin, int end, Points& f) const;
   Eigen::Matrix<double, 9, 9> hessian(int i, const Points& x, bool project) const;
   void add_stiffness_estimate(const Points& x, std::vector<double>& diag) const;
+  // No in-plane stress.
+  ElementStress stress(int, const Points&, double) const { return {}; }
 
   // Composite rule: latex and the latex-resin plate in series along the element, by the share
   // inside resin. The stiffness does not follow the release.
   static double composite(double latex, double resin, double fraction);
   void update(const ReleaseLevel&) {}
+  void begin_release(const Points&) {}
   // Sets element e's resin share and its stiffness from the rule.
   void set_fraction(int e, double fraction);
   // dc/df at the element's current state (the design's sensitivities), J.
   double rate(int e) const;
+  // The design's view: the element's two halves (its node is where a density is read), its
+  // fraction set, and d/df of (grad E . w) (the energy is linear in c).
+  ResinFootprint footprint(int e, const Points& x) const;
+  void set_resin_fraction(int e, double f, const ReleaseLevel&) { set_fraction(e, f); }
+  double resin_rate(int e, const Points& x, const Points& w, const ReleaseLevel&) const;
   // Resin rule: elements inside the pattern take the resin plate (formed in the stretched cells).
   int impregnate(const Impregnation& at);
   // Cut rule: an element goes when the cut crosses either of its segments.

@@ -30,6 +30,26 @@ struct ReleaseLevel {
 // Does the segment between particles p and q cross the cut? (the cut rule's question)
 using CrossesCut = std::function<bool(int p, int q)>;
 
+// Where an element lies, for the design's resin maps (frame coordinates, m): the shares of its
+// length along one or two segments (a bending element's two halves), and the point where a
+// density field is read. `count` 0: the design places no resin on it (an added spring, a hinge).
+struct ResinFootprint {
+  struct Segment {
+    Vec2 a = Vec2::Zero(), b = Vec2::Zero();
+    double weight = 0.0;
+  };
+  std::array<Segment, 2> segment;
+  int count = 0;
+  Vec2 site = Vec2::Zero();
+};
+
+// An element's in-plane stress, for pictures and measures (Pa, tension > 0); `carries` false for
+// an element that has none (bending, hinges) or none known (a spring of unknown width).
+struct ElementStress {
+  bool carries = false;
+  double stress = 0.0;
+};
+
 template <typename S>
 concept ElementSet = requires(const S& s, S& w, const Points& x, const Points* v, Points& f, int i,
                               bool project, const std::vector<bool>& keep,
@@ -51,8 +71,17 @@ concept ElementSet = requires(const S& s, S& w, const Points& x, const Points* v
   { s.hessian(i, x, project) } -> std::same_as<Eigen::Matrix<double, 3 * S::kArity, 3 * S::kArity>>;
   // A diagonal stiffness per particle (N/m) for the static solver's scaled masses.
   s.add_stiffness_estimate(x, diag);
-  // The composite rule: rest state and stiffness from the latex, the resin and the release.
+  // The composite rule: rest state and stiffness from the latex, the resin and the release; the
+  // state the release starts from is recorded at positions x when the frame lets go.
   w.update(release);
+  w.begin_release(x);
+  // For the design: where the element lies, its resin fraction set by the composite rule, and
+  // d/df of (grad E(x) . w) in that fraction (0 for an element the design places no resin on).
+  { s.footprint(i, x) } -> std::same_as<ResinFootprint>;
+  w.set_resin_fraction(i, 0.5, release);
+  { s.resin_rate(i, x, x, release) } -> std::same_as<double>;
+  // The stress read-out at positions x for a sheet of the given thickness (m).
+  { s.stress(i, x, 1.0) } -> std::same_as<ElementStress>;
   // The cut rule: which elements a cut severs; then keep only those where keep[i].
   { s.severed(i, crosses) } -> std::same_as<bool>;
   w.filter(keep);

@@ -40,10 +40,13 @@ struct Hinges {
   void add_forces(const Points& x, const Points* v, int begin, int end, Points& f) const;
   Eigen::Matrix<double, 12, 12> hessian(int i, const Points& x, bool project) const;
   void add_stiffness_estimate(const Points&, std::vector<double>&) const {}  // no stiffness
+  // No in-plane stress.
+  ElementStress stress(int, const Points&, double) const { return {}; }
 
   // The moments for the release level: the full moment times the share of the misfit released
   // so far (none before the release).
   void update(const ReleaseLevel& release);
+  void begin_release(const Points&) {}  // the moments follow the level alone
   // Resin rule, for a bilayer coat only: adds hinges inside the pattern whose moments make the
   // released composite curl with the resin on the coat's face. The misfit is the latex's current
   // stretch: eps = I - V^-1, V the in-plane stretch of the hinge's two triangles from the paper to
@@ -52,6 +55,10 @@ struct Hinges {
   // crease); a hinge an earlier coat covers in part takes the rest from this one, up to the
   // whole. Returns the number of hinges with resin.
   int impregnate(const Impregnation& at);
+  // The design places no resin on hinges (a coat is laid out as a stencil, not by the maps).
+  ResinFootprint footprint(int, const Points&) const { return {}; }
+  void set_resin_fraction(int, double, const ReleaseLevel&) {}
+  double resin_rate(int, const Points&, const Points&, const ReleaseLevel&) const { return 0.0; }
   // Cut rule: a hinge goes with either of its triangles.
   bool severed(int i, const CrossesCut& crosses) const;
   // The old sheet's hinges whose four particles and two triangles survive, with their moments.

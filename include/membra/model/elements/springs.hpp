@@ -58,16 +58,25 @@ struct Springs {
   void add_forces(const Points& x, const Points* v, int begin, int end, Points& f) const;
   Eigen::Matrix<double, 6, 6> hessian(int i, const Points& x, bool project) const;
   void add_stiffness_estimate(const Points& x, std::vector<double>& diag) const;
+  // Stress read-out: force / (tributary width x thickness), for springs of known width.
+  ElementStress stress(int i, const Points& x, double thickness) const;
 
   // Composite rule: the resin part (resin and latex in parallel, the resin at rest at its
   // impregnation length) in series with the latex part along the spring. Added springs keep
   // what add_springs gave them.
   void update(int s, const ReleaseLevel& release);
   void update(const ReleaseLevel& release);
+  // The frame lets go: every spring's current length is its frame length.
+  void begin_release(const Points& x);
   // The latex's rest length at this point of the release, m.
   double latex_rest(int s, const ReleaseLevel& release) const;
   // d/df of stiffness and rest length at the spring's current state.
   SpringRate rate(int s, const ReleaseLevel& release) const;
+  // The design's view: the spring's segment (none for an added spring, not part of the sheet),
+  // its fraction set, and d/df of (grad E . w).
+  ResinFootprint footprint(int s, const Points& x) const;
+  void set_resin_fraction(int s, double f, const ReleaseLevel& release);
+  double resin_rate(int s, const Points& x, const Points& w, const ReleaseLevel& release) const;
 
   // Resin rule: springs of the sheet (not added ones) inside the pattern become the composite,
   // the resin at rest at its current length, as stiff as the resin's lattice of the same family.
