@@ -7,6 +7,7 @@
 #include "membra/core/vec.hpp"
 #include "membra/model/elements/bending.hpp"
 #include "membra/model/elements/hinges.hpp"
+#include "membra/model/elements/membrane_triangles.hpp"
 #include "membra/model/elements/springs.hpp"
 
 namespace membra {
@@ -15,8 +16,9 @@ struct Model {
   std::vector<double> mass;      // kg, lumped
   std::vector<double> inv_mass;  // 1/kg; 0 means pinned
   Springs springs;
-  Bending bending;                // plate bending; empty when the sheet has none
-  Hinges hinges;                  // bilayer moments; empty unless resin was applied as a bilayer
+  Bending bending;  // plate bending; empty when the sheet has none
+  Hinges hinges;    // bilayer moments; empty unless resin was applied as a bilayer
+  MembraneTriangles membrane_triangles;  // the continuum sheet; empty on a lattice
   Points reference;               // paper position of each particle in the flat natural sheet, m
   Vec3 gravity = Vec3::Zero();    // acceleration, m/s^2
   double velocity_damping = 0.0;  // D, 1/s: every particle feels -D m v
@@ -29,12 +31,14 @@ struct Model {
     f(springs);
     f(bending);
     f(hinges);
+    f(membrane_triangles);
   }
   template <typename F>
   void for_each_set(F&& f) {
     f(springs);
     f(bending);
     f(hinges);
+    f(membrane_triangles);
   }
 
   // Calls f(set, other's set of the same kind) for every element set, in the same order.
@@ -43,6 +47,7 @@ struct Model {
     f(springs, other.springs);
     f(bending, other.bending);
     f(hinges, other.hinges);
+    f(membrane_triangles, other.membrane_triangles);
   }
 
   int num_particles() const { return static_cast<int>(mass.size()); }
