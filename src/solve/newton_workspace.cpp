@@ -24,7 +24,25 @@ NewtonWorkspace::NewtonWorkspace(const Model& model, const std::vector<int>& dof
 }
 
 bool NewtonWorkspace::fits(const Model& model, const std::vector<int>& dof) const {
-  return dof == dof_ && topology(model) == elements_;
+  if (dof != dof_) return false;
+  // Set by set against the stored topology, without building it again (millions of ints on
+  // large sheets).
+  size_t at = 0;
+  bool same = true;
+  model.for_each_set([&](const auto& set) {
+    if (!same || at >= elements_.size() || elements_[at++] != set.size()) {
+      same = false;
+      return;
+    }
+    for (int i = 0; i < set.size() && same; ++i)
+      for (int p : set.ids(i)) {
+        if (at >= elements_.size() || elements_[at++] != p) {
+          same = false;
+          break;
+        }
+      }
+  });
+  return same && at == elements_.size();
 }
 
 void NewtonWorkspace::bind(const Model& model) {

@@ -148,9 +148,17 @@ TEST(MembraneTriangles, APatchOfIrregularTrianglesCarriesTheLawsStress) {
       const double force = nominal * h * kT;
       EXPECT_NEAR(-right / force, 1.0, 1e-9) << to_string(law) << " equi " << equi;
       EXPECT_LT(interior, 1e-10 * force) << to_string(law);
+      // The read-out: the membrane force per current width over the natural thickness, the
+      // nominal stress over the stretch across it (l2), the same in every triangle.
       const double s0 = m.membrane_triangles.stress(0, x, kT).stress;
+      EXPECT_NEAR(s0 / (nominal / l2), 1.0, 1e-9) << to_string(law);
       for (int i = 1; i < m.membrane_triangles.size(); ++i)
         EXPECT_NEAR(m.membrane_triangles.stress(i, x, kT).stress / s0, 1.0, 1e-10);
+      // Compressed, it reads negative.
+      Points xc = m.reference;
+      xc.row(0) *= 0.9;
+      xc.row(1) *= 0.9;
+      EXPECT_LT(m.membrane_triangles.stress(0, xc, kT).stress, 0.0) << to_string(law);
     }
   }
 }

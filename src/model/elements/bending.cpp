@@ -64,7 +64,7 @@ void Bending::add_stiffness_estimate(const Points& x, std::vector<double>& diag)
 }
 
 double Bending::composite(double latex, double resin, double fraction) {
-  return fraction > 0.0 ? 1.0 / ((1.0 - fraction) / latex + fraction / (latex + resin)) : latex;
+  return 1.0 / ((1.0 - fraction) / latex + fraction / (latex + resin));
 }
 
 void Bending::set_fraction(int e, double fraction) {
@@ -144,7 +144,11 @@ void Bending::carry(const Bending& old, const Rebuild& r) {
     const int o = it->second;
     keep[static_cast<size_t>(e)] = true;
     resin_stiffness[e] = old.resin_stiffness[o] * factor[e] / old.factor[o];
-    set_fraction(e, old.resin_fraction[o]);
+    // Bare latex keeps its stiffness exactly (the rule's 1 / (1 / c) may round).
+    resin_fraction[e] = old.resin_fraction[o];
+    stiffness[e] = resin_fraction[e] > 0.0
+                       ? composite(latex_stiffness[e], resin_stiffness[e], resin_fraction[e])
+                       : latex_stiffness[e];
   }
   filter(keep);
 }

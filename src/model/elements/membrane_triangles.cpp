@@ -146,10 +146,14 @@ ElementStress MembraneTriangles::stress(int i, const Points& x, double) const {
   Eigen::Matrix<double, 3, 2> h;
   h << g[1], g[2];
   // Virtual work dE = H : dDs = a n : L for an in-plane velocity gradient L (dDs = L Ds): the
-  // membrane force tensor n = H Ds^T / a (N/m).
+  // membrane force tensor n = H Ds^T / a (N/m), read in the triangle's plane (so that
+  // compression reads negative, not as the normal's zero).
   const Eigen::Matrix3d n = h * ds.transpose() / area;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (n + n.transpose()),
-                                                           Eigen::EigenvaluesOnly);
+  Eigen::Matrix<double, 3, 2> plane;
+  plane.col(0) = ds.col(0).normalized();
+  plane.col(1) = (ds.col(1) - ds.col(1).dot(plane.col(0)) * plane.col(0)).normalized();
+  const Eigen::Matrix2d n2 = plane.transpose() * (0.5 * (n + n.transpose())) * plane;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(n2, Eigen::EigenvaluesOnly);
   return {true, eig.eigenvalues().maxCoeff() / thickness[static_cast<size_t>(i)]};
 }
 

@@ -21,6 +21,7 @@ void ShellHinges::add(const std::array<int, 4>& ids, const std::array<Vec3, 4>& 
   v.push_back(ids);
   side_area.push_back({a1, a2});
   side_d.push_back({d, d});
+  side_resin.push_back({false, false});
   edge_squared.push_back(e.squaredNorm());
   stiffness.push_back(0.0);
   rest_angle.push_back(0.0);
@@ -52,6 +53,7 @@ void ShellHinges::filter(const std::vector<bool>& keep) {
   keep_where(rest_angle, keep);
   keep_where(side_area, keep);
   keep_where(side_d, keep);
+  keep_where(side_resin, keep);
   keep_where(edge_squared, keep);
 }
 
@@ -115,8 +117,10 @@ int ShellHinges::impregnate(const Impregnation& at) {
     bool any = false;
     for (int side = 0; side < 2; ++side) {
       const Vec3 c = (at.x.col(p[0]) + at.x.col(p[1]) + at.x.col(p[2 + side])) / 3.0;
-      if (!at.pattern.contains(c.head<2>())) continue;
-      side_d[k][static_cast<size_t>(side)] += d_resin;
+      const auto s = static_cast<size_t>(side);
+      if (side_resin[k][s] || !at.pattern.contains(c.head<2>())) continue;
+      side_d[k][s] += d_resin;
+      side_resin[k][s] = true;
       any = true;
     }
     if (!any) continue;
@@ -149,6 +153,7 @@ void ShellHinges::carry(const ShellHinges& old, const Rebuild& r) {
     rest_angle.push_back(old.rest_angle[k]);
     side_area.push_back(old.side_area[k]);
     side_d.push_back(old.side_d[k]);
+    side_resin.push_back(old.side_resin[k]);
     edge_squared.push_back(old.edge_squared[k]);
   }
 }

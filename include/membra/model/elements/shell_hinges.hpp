@@ -27,6 +27,7 @@ struct ShellHinges {
   std::vector<double> rest_angle;     // theta0, rad
   // Material state: each side's rest area and plate stiffness D (N m), and |e|^2 at rest.
   std::vector<std::array<double, 2>> side_area, side_d;
+  std::vector<std::array<bool, 2>> side_resin;  // a side has taken the resin's plate
   std::vector<double> edge_squared;
 
   int size() const { return static_cast<int>(v.size()); }
@@ -53,8 +54,8 @@ struct ShellHinges {
   void update(const ReleaseLevel&) {}
   void begin_release(const Points&) {}
   // Resin rule: a side whose triangle's centroid lies inside the pattern takes the plate of latex
-  // and resin together (D of E_latex t_latex^3 + E_resin t_resin^3, over 12 (1 - nu^2)), as the
-  // membrane triangles take their resin layer.
+  // and resin together, once (a later pattern over it adds nothing) (D of E_latex t_latex^3 +
+  // E_resin t_resin^3, over 12 (1 - nu^2)), as the membrane triangles take their resin layer.
   int impregnate(const Impregnation& at);
   bool severed(int i, const CrossesCut& crosses) const;
   void carry(const ShellHinges& old, const Rebuild& r);
