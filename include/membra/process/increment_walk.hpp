@@ -22,7 +22,6 @@ class IncrementWalk {
   // `adaptive`: halving, growth and the predictor (a second-order solver).
   IncrementWalk(Path path, const SimulationSpec& sim, bool adaptive);
 
-  const Path& path() const { return path_; }
   // Every increment accepted (a path that is not gradual: at once).
   bool done() const { return path_.kind != Path::Kind::gradual || at_ >= units(); }
   // Begins the next increment: sets the path at its end and, adaptive, moves x by the predictor.

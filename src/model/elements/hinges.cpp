@@ -189,13 +189,9 @@ void Hinges::carry(const Hinges& old, const Rebuild& r) {
   };
   for (int e = 0; e < old.size(); ++e) {
     std::array<int, 4> p;
-    bool alive = true;
-    for (size_t k = 0; k < 4; ++k) {
-      p[k] = r.new_of_old[static_cast<size_t>(old.v[static_cast<size_t>(e)][k])];
-      alive = alive && p[k] >= 0;
-    }
-    alive = alive && alive_triangle(p[0], p[1], p[2]) && alive_triangle(p[1], p[0], p[3]);
-    if (alive) add(p, old.moment[e], old.full_moment[e], old.coverage[e]);
+    if (r.map(old.v[static_cast<size_t>(e)], p) && alive_triangle(p[0], p[1], p[2]) &&
+        alive_triangle(p[1], p[0], p[3]))
+      add(p, old.moment[e], old.full_moment[e], old.coverage[e]);
   }
 }
 

@@ -199,12 +199,7 @@ void MembraneTriangles::carry(const MembraneTriangles& old, const Rebuild& r) {
   for (int i = 0; i < old.size(); ++i) {
     const auto k = static_cast<size_t>(i);
     std::array<int, 3> p;
-    bool alive = true;
-    for (size_t c = 0; c < 3; ++c) {
-      p[c] = r.new_of_old[static_cast<size_t>(old.v[k][c])];
-      alive = alive && p[c] >= 0;
-    }
-    if (!alive) continue;
+    if (!r.map(old.v[k], p)) continue;
     v.push_back(p);
     latex.push_back(old.latex[k]);
     resin.push_back(old.resin[k]);

@@ -142,12 +142,7 @@ void ShellHinges::carry(const ShellHinges& old, const Rebuild& r) {
   for (int i = 0; i < old.size(); ++i) {
     const auto k = static_cast<size_t>(i);
     std::array<int, 4> p;
-    bool alive = true;
-    for (size_t c = 0; c < 4; ++c) {
-      p[c] = r.new_of_old[static_cast<size_t>(old.v[k][c])];
-      alive = alive && p[c] >= 0;
-    }
-    if (!alive) continue;
+    if (!r.map(old.v[k], p)) continue;
     v.push_back(p);
     stiffness.push_back(old.stiffness[k]);
     rest_angle.push_back(old.rest_angle[k]);

@@ -2,6 +2,8 @@
 // What a protocol step hands every element set: the impregnation (which resin where, in which
 // state) and the rebuild of a sheet without the nodes a hole removed. One struct per question,
 // so each set's resin rule and cut rule read the same inputs (docs/process.md).
+#include <array>
+#include <cstddef>
 #include <vector>
 
 #include "membra/core/vec.hpp"
@@ -32,6 +34,16 @@ struct Rebuild {
   const Sheet& old_sheet;
   const Sheet& new_sheet;
   const std::vector<int>& new_of_old;  // new particle of each old one, -1 if removed
+
+  // An old element's particles on the new sheet; false when any of them was removed.
+  template <size_t N>
+  bool map(const std::array<int, N>& old_ids, std::array<int, N>& ids) const {
+    for (size_t c = 0; c < N; ++c) {
+      ids[c] = new_of_old[static_cast<size_t>(old_ids[c])];
+      if (ids[c] < 0) return false;
+    }
+    return true;
+  }
 };
 
 }  // namespace membra
