@@ -11,8 +11,9 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/stop_request.hpp"
-#include "membra/output/output_set.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/model/continuum_sheet.hpp"
+#include "membra/output/output_set.hpp"
 #include "membra/process/multilevel.hpp"
 #include "membra/process/run.hpp"
 #include "membra/process/summary.hpp"
@@ -62,10 +63,13 @@ int cmd_validate(const std::string& scene_file, const std::vector<std::string>& 
   const membra::Scene scene = membra::load_scene(scene_file, sets);
   try {
     const membra::PreparedScene p = membra::prepare_scene(scene);
-    if (!quiet)
-      std::cout << scene_file << ": valid (" << p.membrane.sheet.model.num_particles()
-                << " particles, " << p.membrane.sheet.model.springs.size() << " springs, "
+    const membra::Sheet& sheet = p.membrane.sheet;
+    if (!quiet && sheet.continuum())
+      std::cout << scene_file << ": valid (continuum: " << membra::mesh_line(sheet.mesh) << ", "
                 << p.pinned << " pinned)\n";
+    else if (!quiet)
+      std::cout << scene_file << ": valid (" << sheet.model.num_particles() << " particles, "
+                << sheet.model.springs.size() << " springs, " << p.pinned << " pinned)\n";
   } catch (const membra::InputError& e) {
     throw membra::InputError(scene_file + ": " + e.where(), e.detail());
   }

@@ -20,13 +20,15 @@ using nlohmann::json;
 const std::vector<std::string_view> kBenchmarkKeys = {"problem", "n"};
 const std::vector<std::string_view> kTopKeys = {"benchmark", "$schema",   "name", "description",
                                                 "sheet",     "materials", "pins", "simulation",
-                                                "protocol",  "output"};
+                                                "protocol",  "output",    "model"};
 const std::vector<std::string_view> kOutputKeys = {"frames", "camera", "image_size"};
 const std::vector<std::string_view> kCameraKeys = {"azimuth", "elevation"};
-const std::vector<std::string_view> kSheetKeys = {"size",    "resolution", "material",
-                                                  "springs", "bending",    "outline"};
+const std::vector<std::string_view> kSheetKeys = {"size",    "resolution", "material", "springs",
+                                                  "bending", "outline",    "mesh"};
+const std::vector<std::string_view> kMeshKeys = {"max_edge", "elements_across", "min_angle",
+                                                 "grading", "tolerance"};
 const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
-const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density"};
+const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density", "law"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
 const std::vector<std::string_view> kSimulationKeys = {"solver",
                                                        "K",
@@ -76,17 +78,31 @@ std::map<std::string, Material> parse_materials(const json& j) {
     base.youngs_modulus = value_or_required("E", base.youngs_modulus, units::MPa);
     base.thickness = value_or_required("thickness", base.thickness, units::mm);
     base.density = value_or_required("density", base.density, units::g_per_cm3);
+    const std::string law = m.string("law", std::string(to_string(base.law)),
+                                     {"neo_hookean", "mooney_rivlin", "stvk", "linear"});
+    base.law = *membrane_law_from_name(law);
     out[name] = base;
   }
   return out;
 }
 
-void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& materials,
-                 Scene& scene) {
-  const JsonObject sheet = top.object("sheet", kSheetKeys);
-  const auto size = sheet.numbers("size", 2, Bounds::positive());
-  scene.grid.width = size[0] * units::mm;
-  scene.grid.height = size[1] * units::mm;
+// sheet.mesh: the continuum sheet's mesh settings, in mm and degrees.
+void parse_mesh(const JsonObject& sheet, Scene& scene) {
+  if (!sheet.has("mesh")) return;
+  const JsonObject m = sheet.object("mesh", kMeshKeys);
+  MeshSpec& spec = scene.mesh;
+  spec.max_edge = m.number("max_edge", 0.0, Bounds::non_negative()) * units::mm;
+  spec.elements_across =
+      static_cast<int>(m.integer("elements_across", spec.elements_across, 1, 64));
+  spec.min_angle_deg = m.number("min_angle", spec.min_angle_deg, Bounds::between(5.0, 33.0));
+  spec.grading = m.number("grading", spec.grading, Bounds::between(0.05, 2.0));
+  spec.tolerance =
+      m.number("tolerance", spec.tolerance / units::mm, Bounds::between(1e-4, 1.0)) * units::mm;
+}
+
+// sheet.resolution: the lattice's grid [nx, ny]; a continuum sheet may leave it out.
+void parse_resolution(const JsonObject& sheet, Scene& scene) {
+  if (!sheet.has("resolution") && scene.model == SheetModel::continuum) return;
   const auto& res = sheet.at("resolution");
   if (!res.is_array() || res.size() != 2)
     throw InputError(sheet.pointer("resolution"),
@@ -106,13 +122,24 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
     (k == 0 ? scene.grid.nx : scene.grid.ny) = static_cast<int>(n);
   }
   // The homogenization (docs/model.md, "Homogenization") is for square cells.
-  const double hx = size[0] / (scene.grid.nx - 1), hy = size[1] / (scene.grid.ny - 1);
+  const double hx = scene.grid.width / units::mm / (scene.grid.nx - 1),
+               hy = scene.grid.height / units::mm / (scene.grid.ny - 1);
   if (std::abs(hx / hy - 1.0) > 0.01) {
     std::ostringstream msg;
     msg << "cells must be square for the lattice to be isotropic, but the spacing is " << hx
         << " mm along x and " << hy << " mm along y; choose (nx-1)/(ny-1) = width/height";
     throw InputError(sheet.pointer("resolution"), msg.str());
   }
+}
+
+void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& materials,
+                 Scene& scene) {
+  const JsonObject sheet = top.object("sheet", kSheetKeys);
+  const auto size = sheet.numbers("size", 2, Bounds::positive());
+  scene.grid.width = size[0] * units::mm;
+  scene.grid.height = size[1] * units::mm;
+  parse_resolution(sheet, scene);
+  parse_mesh(sheet, scene);
   const std::string mat = sheet.string("material", "latex");
   const auto it = materials.find(mat);
   if (it == materials.end())
@@ -248,6 +275,9 @@ Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   const JsonObject top(j, "", kTopKeys);
   scene.name = top.string("name", "untitled");
   scene.description = top.string("description", "");
+  scene.model = top.string("model", "lattice", {"lattice", "continuum"}) == "continuum"
+                    ? SheetModel::continuum
+                    : SheetModel::lattice;
   const auto materials = parse_materials(j);
   if (top.has("benchmark")) {
     // The benchmark problem builds its own sheet; it is solved once, as it is.

@@ -118,15 +118,18 @@ json write_cut(const CutStep& s) {
   return j;
 }
 
-json write_material(const Material& m) {
-  return {{"E", in(m.youngs_modulus, units::MPa)},
-          {"thickness", in(m.thickness, units::mm)},
-          {"density", in(m.density, units::g_per_cm3)}};
+// The law only where it matters: the lattice's springs are linear whatever it says.
+json write_material(const Material& m, bool with_law) {
+  json j = {{"E", in(m.youngs_modulus, units::MPa)},
+            {"thickness", in(m.thickness, units::mm)},
+            {"density", in(m.density, units::g_per_cm3)}};
+  if (with_law) j["law"] = std::string(to_string(m.law));
+  return j;
 }
 
 bool same_material(const Material& a, const Material& b) {
   return a.youngs_modulus == b.youngs_modulus && a.thickness == b.thickness &&
-         a.density == b.density;
+         a.density == b.density && a.law == b.law;
 }
 
 // The materials the scene uses that are not presets as they stand, by name.
@@ -137,23 +140,31 @@ json write_materials(const Scene& scene) {
   json out = json::object();
   for (const auto& [name, m] : used) {
     const auto preset = material_preset(name);
-    if (!preset || !same_material(*preset, m)) out[name] = write_material(m);
+    if (!preset || !same_material(*preset, m))
+      out[name] = write_material(m, scene.model == SheetModel::continuum);
   }
   return out;
 }
 
 json write_sheet(const Scene& scene) {
   const SheetOptions& o = scene.sheet;
-  return {{"size", {in(scene.grid.width, units::mm), in(scene.grid.height, units::mm)}},
-          {"resolution", {scene.grid.nx, scene.grid.ny}},
-          {"material", o.material.name},
-          {"bending", o.bending},
-          {"outline", scene.outline},
-          {"springs",
-           {{"stretch", o.stretch},
-            {"shear", o.shear},
-            {"flex", o.flex},
-            {"flex_ratio", o.flex_ratio}}}};
+  json j = {{"size", {in(scene.grid.width, units::mm), in(scene.grid.height, units::mm)}},
+            {"resolution", {scene.grid.nx, scene.grid.ny}},
+            {"material", o.material.name},
+            {"bending", o.bending},
+            {"outline", scene.outline},
+            {"springs",
+             {{"stretch", o.stretch},
+              {"shear", o.shear},
+              {"flex", o.flex},
+              {"flex_ratio", o.flex_ratio}}}};
+  if (scene.model == SheetModel::continuum)
+    j["mesh"] = {{"max_edge", in(scene.mesh.max_edge, units::mm)},
+                 {"elements_across", scene.mesh.elements_across},
+                 {"min_angle", scene.mesh.min_angle_deg},
+                 {"grading", scene.mesh.grading},
+                 {"tolerance", in(scene.mesh.tolerance, units::mm)}};
+  return j;
 }
 
 json write_simulation(const Scene& scene) {
@@ -269,6 +280,7 @@ json write_step(const ProtocolStep& step) {
 
 json write_scene(const Scene& scene) {
   json j = {{"name", scene.name}, {"description", scene.description}};
+  if (scene.model == SheetModel::continuum) j["model"] = "continuum";
   if (scene.benchmark_n > 0) {
     j["benchmark"] = {{"problem", "P"}, {"n", scene.benchmark_n}};
   } else {

@@ -9,7 +9,7 @@ Material latex() {
 }
 
 Material epoxy() {
-  return {"epoxy", 2500.0 * units::MPa, 0.5 * units::mm, 1.2 * units::g_per_cm3};
+  return {"epoxy", 2500.0 * units::MPa, 0.5 * units::mm, 1.2 * units::g_per_cm3, MembraneLaw::stvk};
 }
 
 std::optional<Material> material_preset(std::string_view name) {

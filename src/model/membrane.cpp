@@ -17,6 +17,41 @@ Membrane make_membrane(Sheet sheet) {
   return m;
 }
 
+namespace {
+
+// The continuum sheet's frame: the rim particles whose outward normal points towards a held
+// edge (on a disk, as on the lattice, left and right hold every rim particle but the top and
+// bottom ones).
+int hold_rim(Membrane& m, FrameEdges edges) {
+  const SheetMesh& mesh = m.sheet.mesh;
+  Model& model = m.sheet.model;
+  constexpr double eps = 1e-6;
+  for (size_t k = 0; k < mesh.rim.size(); ++k) {
+    const Vec2& n = mesh.rim_normal[k];
+    const bool held = (edges.left && n.x() < -eps) || (edges.right && n.x() > eps) ||
+                      (edges.bottom && n.y() < -eps) || (edges.top && n.y() > eps);
+    const int p = mesh.rim[k];
+    if (!held || model.pinned(p)) continue;
+    model.pin(p);
+    m.frame.push_back(p);
+  }
+  return static_cast<int>(m.frame.size());
+}
+
+// Where particle p lies on the sheet, as fractions (u, v) of its width and height: grid nodes
+// by their indices, mesh vertices by their paper positions.
+Vec2 unit_position(const Sheet& sheet, int p) {
+  const GridSheet& g = sheet.grid;
+  if (sheet.continuum()) {
+    const Vec2 q = sheet.model.reference.col(p).head<2>();
+    return {q.x() / g.width(), q.y() / g.height()};
+  }
+  const auto [i, j] = g.node(p);
+  return {static_cast<double>(i) / (g.nx() - 1), static_cast<double>(j) / (g.ny() - 1)};
+}
+
+}  // namespace
+
 int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges) {
   if (!(lx > 0.0) || !(ly > 0.0)) throw std::invalid_argument("stretch ratios must be > 0");
   m.state.x.row(0) *= lx;
@@ -25,6 +60,7 @@ int stretch_frame(Membrane& m, double lx, double ly, FrameEdges edges) {
   m.stretch = m.stretch.cwiseProduct(Vec2(lx, ly));
   m.impregnated.clear();  // the sheet moves under the earlier patterns
   m.coats.clear();
+  if (m.sheet.continuum()) return hold_rim(m, edges);
   const GridSheet& g = m.sheet.grid;
   Model& model = m.sheet.model;
   // The frame holds the sheet's outer rim: the first and last node of every row (left, right)
@@ -94,12 +130,10 @@ void set_release_level(Membrane& m, double level) {
 void perturb(Membrane& m, double amplitude, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> noise(-1.0, 1.0);
-  const GridSheet& g = m.sheet.grid;
   for (int p = 0; p < m.sheet.model.num_particles(); ++p) {
     if (m.sheet.model.pinned(p)) continue;
-    const auto [i, j] = g.node(p);
-    const double u = static_cast<double>(i) / (g.nx() - 1),
-                 v = static_cast<double>(j) / (g.ny() - 1);
+    const Vec2 uv = unit_position(m.sheet, p);
+    const double u = uv.x(), v = uv.y();
     const double bump = std::sin(std::numbers::pi * u) * std::sin(std::numbers::pi * v);
     m.state.x(2, p) += amplitude * (m.resin_side * bump + 0.1 * noise(rng));
   }
@@ -112,14 +146,12 @@ void perturb_randomly(Membrane& m, double amplitude, std::uint64_t seed) {
   double c[3][3];  // weights of sin(a pi u) sin(b pi v), lower modes likelier
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) c[a][b] = gauss(rng) / ((a + 1) * (b + 1));
-  const GridSheet& g = m.sheet.grid;
   const int n = m.sheet.model.num_particles();
   std::vector<double> w(static_cast<size_t>(n), 0.0);
   double peak = 0.0;
   for (int p = 0; p < n; ++p) {
-    const auto [i, j] = g.node(p);
-    const double u = static_cast<double>(i) / (g.nx() - 1),
-                 v = static_cast<double>(j) / (g.ny() - 1);
+    const Vec2 uv = unit_position(m.sheet, p);
+    const double u = uv.x(), v = uv.y();
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
         w[p] += c[a][b] * std::sin((a + 1) * std::numbers::pi * u) *

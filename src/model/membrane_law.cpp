@@ -18,6 +18,13 @@ std::string_view to_string(MembraneLaw law) {
   return "unknown";
 }
 
+std::optional<MembraneLaw> membrane_law_from_name(std::string_view name) {
+  for (MembraneLaw law : {MembraneLaw::neo_hookean, MembraneLaw::mooney_rivlin, MembraneLaw::stvk,
+                          MembraneLaw::linear})
+    if (to_string(law) == name) return law;
+  return std::nullopt;
+}
+
 LawConstants law_constants(MembraneLaw law, double youngs_modulus, double nu) {
   if (!(youngs_modulus > 0.0)) throw std::invalid_argument("a law needs a positive modulus E");
   const double mu_incompressible = youngs_modulus / 3.0;

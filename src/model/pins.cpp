@@ -1,14 +1,36 @@
 #include "membra/model/pins.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
 namespace membra {
 namespace {
 
+// Corners and edges of a sheet without a grid (a mesh): the particles at the rectangle's corners
+// and on its sides, by their paper positions.
+std::vector<int> select_on_mesh(const PinSpec& pin, const GridSheet& g, const Model& m) {
+  std::vector<int> out;
+  const double eps = 1e-9 * std::max(g.width(), g.height());
+  for (int p = 0; p < m.num_particles(); ++p) {
+    const Vec2 q = m.reference.col(p).head<2>();
+    const bool left = q.x()<eps, right = q.x()> g.width() - eps,
+               bottom = q.y()<eps, top = q.y()> g.height() - eps;
+    const bool take = pin.kind == PinSpec::Kind::corners
+                          ? (left || right) && (bottom || top)
+                          : (pin.edge == "left" && left) || (pin.edge == "right" && right) ||
+                                (pin.edge == "bottom" && bottom) || (pin.edge == "top" && top);
+    if (take) out.push_back(p);
+  }
+  return out;
+}
+
 std::vector<int> select(const PinSpec& pin, const GridSheet& g, const Model& m) {
   std::vector<int> out;
   const int nx = g.nx(), ny = g.ny();
+  const bool mesh = g.num_particles() == 0 && m.num_particles() > 0;
+  if (mesh && (pin.kind == PinSpec::Kind::corners || pin.kind == PinSpec::Kind::edge))
+    return select_on_mesh(pin, g, m);
   switch (pin.kind) {
     case PinSpec::Kind::corners:
       for (auto [i, j] : {std::pair{0, 0}, {nx - 1, 0}, {0, ny - 1}, {nx - 1, ny - 1}})

@@ -135,7 +135,7 @@ Sheet build_sheet(const GridSpec& spec, const SheetOptions& o, const NodeMask& k
   add_lattice_springs(grid, o, k, m);
   std::vector<Triangle> tris = triangulate(grid);
   if (o.bending) add_bending_elements(grid, bending_stiffness(mat), m.bending);
-  return Sheet{std::move(grid), mat, std::move(m), std::move(tris), k, o};
+  return Sheet{std::move(grid), mat, std::move(m), std::move(tris), k, o, {}};
 }
 
 }  // namespace membra

@@ -17,6 +17,23 @@ json mm3(const Vec3& v) {
 const double per_mm2 = units::mm * units::mm;  // 1/m^2 to 1/mm^2
 
 // What the solves did, the model's size, and the stiffnesses.
+// The model, and the continuum sheet's mesh as made and asked for: a script reruns the scene at
+// half the element size with --set sheet.mesh.max_edge=...
+void report_model(const Scene& scene, const Sheet& sheet, json& j) {
+  j["model"] = to_string(scene.model);
+  if (!sheet.continuum()) return;
+  const SheetMesh& m = sheet.mesh;
+  j["mesh"] = {{"vertices", m.vertices},
+               {"triangles", m.triangles},
+               {"min_angle_deg", m.min_angle_deg},
+               {"min_edge_mm", m.min_edge / units::mm},
+               {"mean_edge_mm", m.mean_edge / units::mm},
+               {"max_edge", m.spec.max_edge / units::mm},
+               {"elements_across", m.spec.elements_across},
+               {"narrowest_feature_mm", m.narrowest.width / units::mm},
+               {"laws", {{"sheet", std::string(to_string(sheet.material.law))}}}};
+}
+
 void report_run(const Scene& scene, const RunResult& r, json& j) {
   const SolveReport& s = r.solve;
   const Model& m = r.prepared.membrane.sheet.model;
@@ -44,6 +61,7 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
   j["springs"] = m.springs.size();
   j["triangles"] = r.prepared.membrane.sheet.triangles.size();
   j["pinned"] = r.prepared.pinned;
+  report_model(scene, r.prepared.membrane.sheet, j);
   j["stiffness"] = {{"stretch", r.prepared.membrane.sheet.stiffness.stretch / units::N_per_mm},
                     {"shear", r.prepared.membrane.sheet.stiffness.shear / units::N_per_mm},
                     {"flex", r.prepared.membrane.sheet.stiffness.flex / units::N_per_mm}};
@@ -197,6 +215,12 @@ json form_units() {
       {"wall_seconds", "s"},
       {"max_seconds", "s (simulation.max_seconds, the run's wall-time budget; 0: none)"},
       {"simulated_seconds", "s"},
+      {"model", "text (lattice: the paper's springs on a grid; continuum: the latex-resin shell)"},
+      {"mesh.max_edge", "mm (sheet.mesh.max_edge as made; mesh.elements_across likewise)"},
+      {"mesh.min_edge_mm", "mm"},
+      {"mesh.mean_edge_mm", "mm"},
+      {"mesh.min_angle_deg", "degrees"},
+      {"mesh.narrowest_feature_mm", "mm (narrowest resin piece or latex gap, natural sheet)"},
       {"stiffness", "N/mm"},
       {"energy", "J (elastic + bending + gravitational potential)"},
       {"energy_parts", "J"},

@@ -1,6 +1,7 @@
 #include "membra/output/run_files.hpp"
 
 #include "membra/io/gltf.hpp"
+#include "membra/io/mesh_svg.hpp"
 #include "membra/io/obj.hpp"
 #include "membra/io/ply.hpp"
 #include "membra/io/stencil.hpp"
@@ -49,6 +50,17 @@ void stage_run_files(const Scene& scene, const RunResult& r, const PictureOption
     g.extras["stress_range"] = {c.s_lo, c.s_hi};     // MPa
     write_glb(os, g);
   });
+  // The continuum sheet's mesh on the natural sheet, its resin triangles filled.
+  if (mesh.continuum()) {
+    const MembraneTriangles& mt = mesh.model.membrane_triangles;
+    std::vector<bool> resin(static_cast<size_t>(mt.size()));
+    for (int i = 0; i < mt.size(); ++i)
+      resin[static_cast<size_t>(i)] = mt.resin[static_cast<size_t>(i)].volume > 0.0;
+    out.add("mesh.svg", [&](std::ostream& os) {
+      write_mesh_svg(os, mesh.model.reference, mesh.triangles, resin, mesh.grid.width(),
+                     mesh.grid.height());
+    });
+  }
   // Each stable form an exploration found (simulation.explore), as a mesh.
   for (size_t b = 0; b < r.branches.size(); ++b) {
     const auto& xb = r.branches[b].run.prepared.membrane.state.x;

@@ -4,6 +4,8 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/model/benchmark_problem.hpp"
+#include "membra/model/continuum_sheet.hpp"
+#include "membra/model/pattern_boundary.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/process/memory_estimate.hpp"
 
@@ -20,7 +22,8 @@ PreparedScene prepare_benchmark(const Scene& scene) {
               std::move(b.model),
               std::move(b.triangles),
               LatticeStiffness{1.0, 0.5, 0.1},
-              scene.sheet};
+              scene.sheet,
+              {}};
   PreparedScene p{make_membrane(std::move(sheet)), 0, 1.0, std::nullopt};
   p.membrane.state = b.start;
   p.membrane.sheet.model.gravity = Vec3::Zero();
@@ -39,7 +42,56 @@ NodeMask outline_mask(const Scene& scene) {
   };
 }
 
+// The steps the continuum sheet cannot take yet, refused before anything runs.
+void check_continuum_protocol(const Scene& scene) {
+  for (const ProtocolStep& step : scene.protocol) {
+    const auto kind = step.kind();
+    const auto* imp = step.as<ImpregnateStep>();
+    if (kind == ProtocolStep::Kind::grow || kind == ProtocolStep::Kind::add_springs ||
+        kind == ProtocolStep::Kind::cut || kind == ProtocolStep::Kind::curvature_map ||
+        (imp && imp->bilayer))
+      throw InputError(step.pointer, std::string("the continuum model does not take ") +
+                                         (imp ? "bilayer coats" : step_name(kind)) +
+                                         " steps yet; set \"model\": \"lattice\"");
+  }
+  if (scene.simulation.multilevel > 0)
+    throw InputError("/simulation/multilevel",
+                     "multilevel releases are the lattice's; the continuum model runs on its "
+                     "graded mesh (set it to 0)");
+}
+
+Sheet continuum_sheet(const Scene& scene) {
+  check_continuum_protocol(scene);
+  try {
+    return build_continuum_sheet(continuum_spec(scene));
+  } catch (const std::invalid_argument& e) {
+    throw InputError("/sheet/mesh", e.what());
+  }
+}
+
 }  // namespace
+
+ContinuumSpec continuum_spec(const Scene& scene) {
+  ContinuumSpec spec;
+  spec.width = scene.grid.width, spec.height = scene.grid.height;
+  spec.disk = scene.outline == "disk";
+  spec.mesh = scene.mesh;
+  spec.material = scene.sheet.material;
+  Vec2 stretch(1.0, 1.0);
+  BoundaryOptions o;
+  o.tolerance = scene.mesh.tolerance;
+  for (const ProtocolStep& step : scene.protocol) {
+    if (const auto* st = step.as<StretchStep>()) stretch = stretch.cwiseProduct(st->lambda);
+    const auto* imp = step.as<ImpregnateStep>();
+    if (!imp) continue;
+    const Box2 frame{Vec2::Zero(), stretch.cwiseProduct(Vec2(spec.width, spec.height))};
+    for (Polygon2 poly : pattern_boundaries(*imp->pattern, frame, o)) {
+      for (Vec2& p : poly) p = p.cwiseQuotient(stretch);
+      spec.features.push_back(std::move(poly));
+    }
+  }
+  return spec;
+}
 
 int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScene& p) {
   try {
@@ -49,9 +101,26 @@ int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScen
   }
 }
 
+namespace {
+
+// The continuum sheet: its force scale is the lattice's at the mesh's mean edge.
+PreparedScene prepare_continuum(const Scene& scene) {
+  PreparedScene p{make_membrane(continuum_sheet(scene)), 0, 0.0, std::nullopt};
+  p.pinned = pin(scene.pins, "/pins", p);
+  Model& m = p.membrane.sheet.model;
+  m.gravity = Vec3(0.0, 0.0, -scene.simulation.gravity);
+  m.velocity_damping = scene.simulation.damping;
+  p.force_scale = p.membrane.sheet.stiffness.stretch * p.membrane.sheet.mesh.mean_edge;
+  return p;
+}
+
+}  // namespace
+
 PreparedScene prepare_scene(const Scene& scene) {
   check_memory(scene, machine_memory());  // before allocating anything
   if (scene.benchmark_n > 0) return prepare_benchmark(scene);
+  if (scene.model == SheetModel::continuum && scene.benchmark_n == 0)
+    return prepare_continuum(scene);
   PreparedScene p{make_membrane(build_sheet(scene.grid, scene.sheet, outline_mask(scene))), 0, 0.0,
                   std::nullopt};
   p.pinned = pin(scene.pins, "/pins", p);

@@ -17,6 +17,10 @@ PatternPtr union_of_steps(const Scene& scene,
 
 }  // namespace
 
+const char* to_string(SheetModel model) {
+  return model == SheetModel::continuum ? "continuum" : "lattice";
+}
+
 PatternPtr scene_pattern(const Scene& scene) {
   return union_of_steps(scene, [](const ImpregnateStep&) { return true; });
 }

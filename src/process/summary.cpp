@@ -24,7 +24,8 @@ void summarize_form(RunResult& r) {
   r.kinetic_energy = kinetic_energy(m, s.v);
   r.shape = summarize_shape(s.x, m.reference);
   r.curvature = gaussian_curvature(s.x, mem.sheet.triangles);
-  smooth_density_on_grid(mem.sheet.grid, r.curvature);
+  // The grid's alternating valence defects need the filter; a Delaunay mesh has none.
+  if (!mem.sheet.continuum()) smooth_density_on_grid(mem.sheet.grid, r.curvature);
   r.form = classify_form(r.curvature);
   r.curvature_global = global_curvature(s.x, m.reference, mem.sheet.triangles);
   if (!r.curvature_global.interior.empty()) r.form_global = classify_form(r.curvature_global);

@@ -94,6 +94,13 @@ void stage_global_form(const RunResult& r, const PictureOptions& opts, const Cam
     if (8 * i >= g.nx() && 8 * i <= 7 * g.nx() && 8 * j >= g.ny() && 8 * j <= 7 * g.ny())
       interior.push_back(k[static_cast<size_t>(p)]);
   }
+  if (mesh.continuum())
+    for (int p = 0; p < mesh.model.num_particles(); ++p) {
+      const Vec2 u =
+          mesh.model.reference.col(p).head<2>().cwiseQuotient(Vec2(g.width(), g.height()));
+      if ((u.array() >= 0.125).all() && (u.array() <= 0.875).all())
+        interior.push_back(k[static_cast<size_t>(p)]);
+    }
   auto [lo, hi] =
       symmetric_percentile_range(interior.empty() ? k : interior, kCurvaturePercentile, 1e-6);
   if (opts.curvature_range.size() == 2) lo = opts.curvature_range[0], hi = opts.curvature_range[1];

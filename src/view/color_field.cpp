@@ -42,7 +42,8 @@ ColorField color_field(const ViewerSession& session, ColorMode mode) {
     }
     case ColorMode::curvature: {
       GaussianCurvature k = gaussian_curvature(x, m.sheet.triangles);
-      if (session.scene().benchmark_n == 0) smooth_density_on_grid(m.sheet.grid, k);
+      if (session.scene().benchmark_n == 0 && !m.sheet.continuum())
+        smooth_density_on_grid(m.sheet.grid, k);
       f.values = k.density;
       for (double& v : f.values) v *= units::mm * units::mm;
       std::tie(f.lo, f.hi) = symmetric_range(f.values, 1e-12);

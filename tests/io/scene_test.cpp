@@ -92,6 +92,28 @@ TEST(Scene, MaterialPresetsCanBePartlyOverridden) {
   EXPECT_DOUBLE_EQ(s.sheet.material.thickness, 1e-3);
 }
 
+TEST(Scene, ReadsTheModelItsMeshAndTheLaws) {
+  json j = minimal();
+  EXPECT_EQ(parse_scene(j).model, SheetModel::lattice);  // the paper's, by default
+  EXPECT_EQ(parse_scene(j).sheet.material.law, MembraneLaw::neo_hookean);  // latex's default
+  j["model"] = "continuum";
+  j["sheet"].erase("resolution");  // the continuum sheet does without
+  j["sheet"]["mesh"] = {{"max_edge", 4}, {"elements_across", 6}};
+  j["materials"] = {{"latex", {{"law", "mooney_rivlin"}}}, {"epoxy", {{"law", "linear"}}}};
+  const Scene s = parse_scene(j);
+  EXPECT_EQ(s.model, SheetModel::continuum);
+  EXPECT_DOUBLE_EQ(s.mesh.max_edge, 0.004);
+  EXPECT_EQ(s.mesh.elements_across, 6);
+  EXPECT_EQ(s.sheet.material.law, MembraneLaw::mooney_rivlin);
+  EXPECT_EQ(epoxy().law, MembraneLaw::stvk);  // the resin's default
+  // --set makes the objects a path needs.
+  json k = minimal();
+  apply_override(k, "model=continuum");
+  apply_override(k, "sheet.mesh.max_edge=4");
+  EXPECT_DOUBLE_EQ(parse_scene(k).mesh.max_edge, 0.004);
+  EXPECT_EQ(parse_scene(k).model, SheetModel::continuum);
+}
+
 TEST(Scene, ErrorsNameTheJsonPointer) {
   struct Case {
     const char* patch;  // JSON merge patch applied to minimal()
@@ -116,6 +138,11 @@ TEST(Scene, ErrorsNameTheJsonPointer) {
       {R"({"pins": [{"point": [500, 10]}]})", "/pins/0/point/0"},
       {R"({"pins": [{"edge": "left", "corners": true}]})", "/pins/0"},
       {R"({"gravity": 1})", "/gravity"},
+      {R"({"model": "fem"})", "/model"},
+      {R"({"sheet": {"mesh": {"max_edge": -4}}})", "/sheet/mesh/max_edge"},
+      {R"({"sheet": {"mesh": {"elements_across": 0}}})", "/sheet/mesh/elements_across"},
+      {R"({"sheet": {"mesh": {"size": 4}}})", "/sheet/mesh/size"},
+      {R"({"materials": {"latex": {"law": "hooke"}}})", "/materials/latex/law"},
   };
   for (const auto& c : cases) {
     json j = minimal();

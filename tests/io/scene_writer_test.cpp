@@ -15,11 +15,11 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-const fs::path kExampleDir = fs::path(MEMBRA_SOURCE_DIR) / "examples";
+const fs::path kWriterExamples = fs::path(MEMBRA_SOURCE_DIR) / "examples";
 
 std::vector<std::string> example_scenes() {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(kExampleDir))
+  for (const auto& e : fs::directory_iterator(kWriterExamples))
     if (e.path().extension() == ".json" && e.path().stem().string().rfind("inverse_", 0) != 0)
       names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
@@ -29,9 +29,9 @@ std::vector<std::string> example_scenes() {
 class RoundTrip : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RoundTrip, ReadWriteReadGivesTheSameScene) {
-  const Scene first = load_scene(kExampleDir / GetParam());
+  const Scene first = load_scene(kWriterExamples / GetParam());
   const json written = write_scene(first);
-  const Scene second = parse_scene(written, kExampleDir);
+  const Scene second = parse_scene(written, kWriterExamples);
   // The writer writes every field: equal writings are equal scenes, to the last bit of every
   // number (the writer picks decimals that read back exactly).
   EXPECT_EQ(write_scene(second), written);
@@ -56,8 +56,8 @@ TEST(SceneWriter, AWrittenSceneRunsToTheSameForm) {
   // exp7 has a cut and a hole, exp4 a grow field: on a small grid, bit for bit.
   for (const char* name : {"exp7_cut.json", "exp4_intrinsic_sin2.json"}) {
     const Scene original = load_scene(
-        kExampleDir / name, {"sheet.resolution=[11,11]", "simulation.max_iterations=3000"});
-    const Scene written = parse_scene(write_scene(original), kExampleDir);
+        kWriterExamples / name, {"sheet.resolution=[11,11]", "simulation.max_iterations=3000"});
+    const Scene written = parse_scene(write_scene(original), kWriterExamples);
     const RunResult a = run_scene(original), b = run_scene(written);
     EXPECT_EQ(a.prepared.membrane.state.x, b.prepared.membrane.state.x) << name;
     EXPECT_EQ(a.solve.iterations, b.solve.iterations) << name;

@@ -4,6 +4,8 @@
 #include <string>
 #include <string_view>
 
+#include "membra/model/membrane_law.hpp"
+
 namespace membra {
 
 // An isotropic thin sheet material.
@@ -12,11 +14,14 @@ struct Material {
   double youngs_modulus = 0.0;  // E, Pa
   double thickness = 0.0;       // t, m
   double density = 0.0;         // rho, kg/m^3
+  // The continuum sheet's law for this material (membrane_law.hpp); the lattice's springs are
+  // linear whatever it says.
+  MembraneLaw law = MembraneLaw::neo_hookean;
 };
 
-// Natural-rubber latex: E 1.5 MPa, t 0.5 mm, rho 0.93 g/cm^3.
+// Natural-rubber latex: E 1.5 MPa, t 0.5 mm, rho 0.93 g/cm^3, incompressible neo-Hookean.
 Material latex();
-// Cured epoxy composite: E 2.5 GPa, t 0.5 mm, rho 1.2 g/cm^3.
+// Cured epoxy composite: E 2.5 GPa, t 0.5 mm, rho 1.2 g/cm^3, Saint Venant-Kirchhoff.
 Material epoxy();
 // A preset by name ("latex", "epoxy"), or nothing.
 std::optional<Material> material_preset(std::string_view name);

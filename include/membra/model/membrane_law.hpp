@@ -14,6 +14,7 @@
 // Templated on the scalar so that dual numbers give exact second derivatives.
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 namespace membra {
@@ -21,6 +22,8 @@ namespace membra {
 enum class MembraneLaw : std::uint8_t { neo_hookean, mooney_rivlin, stvk, linear };
 
 std::string_view to_string(MembraneLaw law);
+// The law a scene names ("neo_hookean", "mooney_rivlin", "stvk", "linear"), or nothing.
+std::optional<MembraneLaw> membrane_law_from_name(std::string_view name);
 
 // A law and its constants (Pa): neo_hookean c1 = mu; mooney_rivlin c1 = C1, c2 = C2; stvk and
 // linear c1 = mu, c2 = the plane-stress lambda.

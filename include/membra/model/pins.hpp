@@ -17,7 +17,8 @@ struct PinSpec {
 
 // Pins the particles each spec selects and returns how many were pinned in all. A spec that
 // selects no particle (a box between nodes, a corner removed by a mask) throws
-// std::invalid_argument naming the spec's index.
+// std::invalid_argument naming the spec's index. On a continuum sheet (a grid without particles)
+// corners and edges are found by paper position.
 int apply_pins(const std::vector<PinSpec>& pins, const GridSheet& grid, Model& model);
 
 }  // namespace membra

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "membra/geometry/grid_sheet.hpp"
+#include "membra/geometry/size_field.hpp"
 #include "membra/geometry/triangulation.hpp"
 #include "membra/model/material.hpp"
 #include "membra/model/model.hpp"
@@ -22,13 +23,36 @@ struct SheetOptions {
   double spring_damping = 0.0;              // c of every spring, N*s/m
 };
 
+// How a continuum sheet's mesh is made (continuum_sheet.hpp): the scene's "sheet.mesh".
+struct MeshSpec {
+  double max_edge = 0.0;    // m, the size away from boundaries; 0: the sheet's smaller side / 20
+  int elements_across = 4;  // elements across the narrowest resin piece or latex gap
+  double min_angle_deg = 25.0;
+  double grading = 0.3;     // growth of the element size per unit distance from a boundary
+  double tolerance = 2e-5;  // m, chords of curved outlines (ellipses, disks, round caps)
+};
+
+// The continuum sheet's mesh as made (empty on a lattice): what report.json's "mesh" says, and
+// the rim the frame holds.
+struct SheetMesh {
+  MeshSpec spec;  // as asked, max_edge resolved
+  int vertices = 0, triangles = 0;
+  double min_angle_deg = 0.0, min_edge = 0.0, mean_edge = 0.0;  // deg, m, m
+  NarrowestFeature narrowest;    // the narrowest piece or gap the size field found
+  std::vector<int> rim;          // particles on the sheet's outline ...
+  std::vector<Vec2> rim_normal;  // ... and its outward normal there (natural sheet)
+};
+
 struct Sheet {
-  GridSheet grid;
+  GridSheet grid;     // the lattice's grid; empty on a continuum sheet
   Material material;  // of the sheet (latex)
   Model model;
   std::vector<Triangle> triangles;
   LatticeStiffness stiffness;  // N/m per family, as built
   SheetOptions options;        // how it was built (to rebuild it when holes remove nodes)
+  SheetMesh mesh;              // the continuum sheet's mesh; empty on a lattice
+
+  bool continuum() const { return mesh.triangles > 0; }
 };
 
 // c / D of the bending element centred on node (i, j) along grid direction (di, dj), for cells

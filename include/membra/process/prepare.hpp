@@ -4,6 +4,7 @@
 #include <chrono>
 #include <optional>
 
+#include "membra/model/continuum_sheet.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/process/scene.hpp"
 
@@ -21,6 +22,10 @@ struct PreparedScene {
 // Builds the membrane of a scene without running it (what `membra validate` checks). Throws
 // InputError naming the scene field when the scene cannot be built.
 PreparedScene prepare_scene(const Scene& scene);
+
+// The continuum sheet a scene describes, before meshing: the sheet, its mesh settings, and every
+// impregnate step's outlines traced on its frame and pulled back to the natural sheet.
+ContinuumSpec continuum_spec(const Scene& scene);
 
 // Pins what `pins` select (in addition to the pins there are). Throws InputError at `where`
 // when a pin selects no particle.

@@ -60,11 +60,18 @@ struct OutputSpec {
   int image_width = 1200, image_height = 900;
 };
 
+// Which model of the sheet a scene simulates (docs/model.md): the paper's particle-spring
+// lattice on a grid, or the continuum latex-resin shell on a mesh that follows the pattern.
+enum class SheetModel { lattice, continuum };
+const char* to_string(SheetModel model);
+
 struct Scene {
   std::filesystem::path file;  // where it was read from (empty for in-memory scenes)
   std::string name;
   std::string description;
-  GridSpec grid;                      // SI
+  SheetModel model = SheetModel::lattice;
+  GridSpec grid;                      // SI; its resolution is the lattice's only
+  MeshSpec mesh;                      // the continuum sheet's mesh (SI)
   SheetOptions sheet;                 // material in SI, K override in N/m
   std::string outline = "rectangle";  // or "disk": the ellipse inscribed in the rectangle
   int benchmark_n = 0;  // > 0: the model is the benchmark problem P(n) (dimensionless, SI as is)

@@ -176,7 +176,7 @@ void MembraneTriangles::begin_release(const Points& x) {
 }
 
 int MembraneTriangles::impregnate(const Impregnation& at) {
-  const LawConstants law = law_constants(MembraneLaw::stvk, at.resin.youngs_modulus);
+  const LawConstants law = law_constants(at.resin.law, at.resin.youngs_modulus);
   int count = 0;
   for (int i = 0; i < size(); ++i) {
     const auto& p = v[static_cast<size_t>(i)];

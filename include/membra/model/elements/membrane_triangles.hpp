@@ -63,7 +63,7 @@ struct MembraneTriangles {
   void update(const ReleaseLevel& release);
   void begin_release(const Points& x);
   // Resin rule: a triangle whose centroid lies inside the pattern takes a resin layer at rest in
-  // its current shape (its law stvk from the resin's E, nu 1/3, and the resin's thickness).
+  // its current shape (the resin material's law and E, nu 1/3, and the resin's thickness).
   int impregnate(const Impregnation& at);
   bool severed(int i, const CrossesCut& crosses) const;
   // Triangles whose three particles survive a rebuild, with their state.

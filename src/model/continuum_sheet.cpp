@@ -1,0 +1,164 @@
+#include "membra/model/continuum_sheet.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "membra/core/units.hpp"
+
+namespace membra {
+namespace {
+
+// Triangles a mesh may have before we refuse it: about 1 GB of model and factorization.
+constexpr double kMaxTriangles = 2e6;
+
+std::string mm(double metres) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", metres / units::mm);
+  return buf;
+}
+
+MeshSpec resolved(const ContinuumSpec& s) {
+  if (!(s.width > 0.0) || !(s.height > 0.0))
+    throw std::invalid_argument("sheet: size must be positive");
+  MeshSpec m = s.mesh;
+  if (m.max_edge == 0.0) m.max_edge = std::min(s.width, s.height) / 20.0;
+  if (!(m.max_edge > 0.0)) throw std::invalid_argument("sheet.mesh.max_edge: must be positive");
+  if (m.elements_across < 1)
+    throw std::invalid_argument("sheet.mesh.elements_across: must be at least 1");
+  if (!(m.min_angle_deg > 0.0) || m.min_angle_deg > 33.0)
+    throw std::invalid_argument("sheet.mesh.min_angle: must be in (0, 33] degrees");
+  if (!(m.grading > 0.0)) throw std::invalid_argument("sheet.mesh.grading: must be positive");
+  if (!(m.tolerance > 0.0)) throw std::invalid_argument("sheet.mesh.tolerance: must be positive");
+  return m;
+}
+
+// The rim: the particles on edges that only one triangle has, with the outward normal.
+void find_rim(const std::vector<Triangle>& tris, const Points& x, SheetMesh& mesh) {
+  std::map<std::pair<int, int>, int> count;
+  for (const Triangle& t : tris)
+    for (int k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
+  std::map<int, Vec2> normal;
+  for (const Triangle& t : tris)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (count[std::minmax(a, b)] != 1) continue;
+      const Vec2 e = x.col(b).head<2>() - x.col(a).head<2>();
+      const Vec2 out(e.y(), -e.x());  // counter-clockwise triangles: the outside is on the right
+      normal.try_emplace(a, Vec2::Zero()).first->second += out;
+      normal.try_emplace(b, Vec2::Zero()).first->second += out;
+    }
+  for (const auto& [p, n] : normal) {
+    mesh.rim.push_back(p);
+    mesh.rim_normal.push_back(n.normalized());
+  }
+}
+
+}  // namespace
+
+std::string mesh_line(const SheetMesh& m) {
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "%d vertices, %d triangles, smallest angle %.1f deg, edges %.2f-%.3g mm "
+                "(narrowest feature %.3g mm)",
+                m.vertices, m.triangles, m.min_angle_deg, m.min_edge / units::mm,
+                m.spec.max_edge / units::mm, m.narrowest.width / units::mm);
+  return buf;
+}
+
+Polygon2 sheet_outline(double width, double height, bool disk, double tolerance) {
+  if (!disk) return {{0.0, 0.0}, {width, 0.0}, {width, height}, {0.0, height}};
+  const double a = 0.5 * width, b = 0.5 * height, r = std::max(a, b);
+  const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tolerance / r));
+  const int n = std::max(16, static_cast<int>(std::ceil(2.0 * std::numbers::pi / step)));
+  Polygon2 out;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2.0 * std::numbers::pi * k / n;
+    out.emplace_back(a + a * std::cos(t), b + b * std::sin(t));
+  }
+  return out;
+}
+
+SheetMeshing mesh_sheet(const ContinuumSpec& s) {
+  SheetMeshing out;
+  out.spec = resolved(s);
+  const MeshSpec& m = out.spec;
+  const Polygon2 outline = sheet_outline(s.width, s.height, s.disk, m.tolerance);
+  std::vector<Polyline2> boundaries(s.features.begin(), s.features.end());
+  boundaries.push_back(outline);
+  const SizeField size(boundaries, Vec2::Zero(), Vec2(s.width, s.height),
+                       {m.max_edge, m.elements_across, m.grading});
+  out.narrowest = size.narrowest();
+  const double finest = out.narrowest.width / m.elements_across;
+  if (out.narrowest.width > 0.0 && finest < 10.0 * m.tolerance)
+    throw std::invalid_argument(
+        "sheet.mesh: a resin piece or gap only " + mm(out.narrowest.width) + " mm wide at (" +
+        mm(out.narrowest.at.x()) + ", " + mm(out.narrowest.at.y()) +
+        ") mm on the natural sheet is narrower than the mesher resolves (elements of " +
+        mm(finest) + " mm, below 10 x the chord tolerance); widen it or lower elements_across");
+  if (size.expected_triangles() > kMaxTriangles)
+    throw std::invalid_argument("sheet.mesh: about " +
+                                std::to_string(static_cast<long>(size.expected_triangles())) +
+                                " triangles, more than membra meshes (2 million); raise max_edge "
+                                "or lower elements_across");
+  MeshRequest request;
+  request.outline = outline;
+  request.constraints = s.features;
+  request.size = [&size](const Vec2& p) { return size(p); };
+  request.min_angle_deg = m.min_angle_deg;
+  request.max_vertices = static_cast<long>(kMaxTriangles);
+  out.mesh = conforming_mesh(request);
+  return out;
+}
+
+Sheet build_continuum_sheet(const ContinuumSpec& s) {
+  const Material& mat = s.material;
+  if (!(mat.youngs_modulus > 0.0) || !(mat.thickness > 0.0) || !(mat.density > 0.0))
+    throw std::invalid_argument("sheet material: E, thickness and density must be positive");
+  const SheetMeshing meshing = mesh_sheet(s);
+  const PlanarMesh& pm = meshing.mesh;
+  Sheet sheet;
+  // A grid of the sheet's size without particles: the sheet's width and height for everyone
+  // who reads them off the grid.
+  sheet.grid = GridSheet(GridSpec{s.width, s.height, 2, 2}, std::vector<bool>(4, false));
+  sheet.material = mat;
+  sheet.options.material = mat;
+  sheet.stiffness = homogenize(mat);  // the force scale of the convergence test
+  Model& m = sheet.model;
+  const int n = static_cast<int>(pm.vertices.size());
+  m.reference = Points::Zero(3, n);
+  for (int p = 0; p < n; ++p) m.reference.col(p).head<2>() = pm.vertices[static_cast<size_t>(p)];
+  m.mass.assign(static_cast<size_t>(n), 0.0);
+  const LawConstants law = law_constants(mat.law, mat.youngs_modulus);
+  double edges = 0.0;
+  for (const auto& t : pm.triangles) {
+    const Vec3 &a = m.reference.col(t[0]), &b = m.reference.col(t[1]), &c = m.reference.col(t[2]);
+    m.membrane_triangles.add(t, a, b, c, law, mat.thickness);
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    for (int k : t) m.mass[static_cast<size_t>(k)] += area * mat.thickness * mat.density / 3.0;
+    sheet.triangles.emplace_back(t[0], t[1], t[2]);
+    edges += (b - a).norm() + (c - b).norm() + (a - c).norm();
+  }
+  m.inv_mass.resize(m.mass.size());
+  for (size_t p = 0; p < m.mass.size(); ++p) m.inv_mass[p] = 1.0 / m.mass[p];
+  const bool incompressible =
+      mat.law == MembraneLaw::neo_hookean || mat.law == MembraneLaw::mooney_rivlin;
+  const double nu = incompressible ? 0.5 : 1.0 / 3.0, t = mat.thickness;
+  m.shell_hinges.add_mesh(pm.triangles, m.reference,
+                          mat.youngs_modulus * t * t * t / (12.0 * (1.0 - nu * nu)));
+  SheetMesh& mesh = sheet.mesh;
+  mesh.spec = meshing.spec;
+  mesh.vertices = n;
+  mesh.triangles = static_cast<int>(pm.triangles.size());
+  mesh.min_angle_deg = pm.min_angle_deg();
+  mesh.min_edge = pm.min_edge();
+  mesh.mean_edge = edges / (3.0 * mesh.triangles);
+  mesh.narrowest = meshing.narrowest;
+  find_rim(sheet.triangles, m.reference, mesh);
+  return sheet;
+}
+
+}  // namespace membra
