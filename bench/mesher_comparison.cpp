@@ -83,6 +83,25 @@ Row cgal_mesh(const ContinuumSpec& spec) {
   return r;
 }
 
+void compare(const char* file) {
+  try {
+    const Scene scene = load_scene(file, {"model=continuum"});
+    const ContinuumSpec spec = continuum_spec(scene);
+    const Row c = cgal_mesh(spec);  // includes its size field
+    const MeshSpec m = mesh_sheet(spec).spec;
+    std::vector<Polyline2> boundaries(spec.features.begin(), spec.features.end());
+    boundaries.push_back(sheet_outline(spec.width, spec.height, spec.disk, m.tolerance));
+    const SizeField size(boundaries, Vec2::Zero(), Vec2(spec.width, spec.height),
+                         {m.max_edge, m.elements_across, m.grading});
+    const Row g = gmsh_mesh(spec, size);
+    for (const auto& [name, r] : {std::pair{"cgal", c}, std::pair{"gmsh", g}})
+      std::printf("%-26s %-6s %9.3f %9zu %9zu %8.1f %9.2f\n", scene.name.c_str(), name, r.seconds,
+                  r.vertices, r.triangles, r.min_angle, r.mean_edge * 1e3);
+  } catch (const std::string& e) {  // Gmsh throws its last error as a string
+    std::printf("%s: gmsh: %s\n", file, e.c_str());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -93,22 +112,7 @@ int main(int argc, char** argv) {
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   std::printf("%-26s %-6s %9s %9s %9s %8s\n", "scene", "mesher", "seconds", "vertices", "triangles",
               "min_deg");
-  for (int a = 1; a < argc; ++a) try {
-    const Scene scene = load_scene(argv[a], {"model=continuum"});
-    const ContinuumSpec spec = continuum_spec(scene);
-    const Row c = cgal_mesh(spec);  // includes its size field
-    const MeshSpec m = mesh_sheet(spec).spec;
-    std::vector<Polyline2> boundaries(spec.features.begin(), spec.features.end());
-    boundaries.push_back(sheet_outline(spec.width, spec.height, spec.disk, m.tolerance));
-    const SizeField size(boundaries, Vec2::Zero(), Vec2(spec.width, spec.height),
-                         {m.max_edge, m.elements_across, m.grading});
-    const Row g = gmsh_mesh(spec, size);
-    for (const auto& [name, r] : {std::pair{"cgal", c}, std::pair{"gmsh", g}})
-      std::printf("%-26s %-6s %9.3f %9zu %9zu %8.1f %9.2f\n", scene.name.c_str(), name,
-                  r.seconds, r.vertices, r.triangles, r.min_angle, r.mean_edge * 1e3);
-  } catch (const std::string& e) {  // Gmsh throws its last error as a string
-    std::printf("%s: gmsh: %s\n", argv[a], e.c_str());
-  }
+  for (int a = 1; a < argc; ++a) compare(argv[a]);
   gmsh::finalize();
   return 0;
 }

@@ -7,8 +7,8 @@
 #include <iostream>
 
 #include "membra/core/input_error.hpp"
-#include "membra/output/bench_report.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/output/bench_report.hpp"
 #include "membra/process/bench.hpp"
 #include "membra/process/scene_bench.hpp"
 

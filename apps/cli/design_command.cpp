@@ -5,9 +5,9 @@
 
 #include "membra/design/design_stretch.hpp"
 #include "membra/design/design_verdict.hpp"
+#include "membra/io/design_reader.hpp"
 #include "membra/output/calibration_store.hpp"
 #include "membra/output/design_files.hpp"
-#include "membra/io/design_reader.hpp"
 #include "membra/output/output_set.hpp"
 #include "membra/render/design_outputs.hpp"
 

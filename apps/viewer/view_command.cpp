@@ -5,8 +5,8 @@
 #include <iostream>
 
 #include "membra/core/input_error.hpp"
-#include "membra/output/output_set.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/output/output_set.hpp"
 #include "membra/view/session_files.hpp"
 #include "membra/view/view_script.hpp"
 #include "viewer_window.hpp"

@@ -17,8 +17,8 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
-#include "membra/output/output_set.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/output/output_set.hpp"
 #include "membra/view/flat_view.hpp"
 #include "membra/view/picking.hpp"
 #include "membra/view/session_files.hpp"

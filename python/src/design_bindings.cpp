@@ -10,9 +10,9 @@
 #include "conversions.hpp"
 #include "membra/core/input_error.hpp"
 #include "membra/design/inverse_design.hpp"
+#include "membra/io/design_reader.hpp"
 #include "membra/output/calibration_store.hpp"
 #include "membra/output/design_files.hpp"
-#include "membra/io/design_reader.hpp"
 #include "membra/render/design_outputs.hpp"
 #include "progress_bridge.hpp"
 

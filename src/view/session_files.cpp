@@ -5,10 +5,10 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/io/obj.hpp"
-#include "membra/output/output_set.hpp"
 #include "membra/io/ply.hpp"
 #include "membra/io/stencil.hpp"
 #include "membra/model/pattern_outline.hpp"
+#include "membra/output/output_set.hpp"
 
 namespace membra {
 namespace {

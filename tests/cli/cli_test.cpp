@@ -11,8 +11,8 @@
 
 #include "test_util.hpp"
 
-#include "membra/output/report.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/output/report.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {

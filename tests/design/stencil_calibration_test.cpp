@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "membra/design/stencil_calibration.hpp"
-#include "membra/output/calibration_store.hpp"
 #include "membra/io/design_reader.hpp"
+#include "membra/output/calibration_store.hpp"
 
 namespace membra {
 namespace {

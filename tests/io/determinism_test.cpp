@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "membra/io/obj.hpp"
-#include "membra/output/report.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/output/report.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "membra/output/calibration_store.hpp"
 #include "membra/io/design_reader.hpp"
+#include "membra/output/calibration_store.hpp"
 
 namespace membra {
 namespace {

@@ -4,8 +4,8 @@
 #include <string>
 
 #include "membra/core/stopwatch.hpp"
-#include "membra/output/report.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/output/report.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {

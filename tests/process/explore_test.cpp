@@ -4,9 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "membra/output/report.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/measure/form_distance.hpp"
+#include "membra/output/report.hpp"
 #include "membra/process/explore.hpp"
 #include "membra/process/run.hpp"
 
