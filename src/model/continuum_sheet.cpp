@@ -147,8 +147,8 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
   const bool incompressible =
       mat.law == MembraneLaw::neo_hookean || mat.law == MembraneLaw::mooney_rivlin;
   const double nu = incompressible ? 0.5 : 1.0 / 3.0, t = mat.thickness;
-  m.shell_hinges.add_mesh(pm.triangles, m.reference,
-                          mat.youngs_modulus * t * t * t / (12.0 * (1.0 - nu * nu)));
+  const double d = mat.youngs_modulus * t * t * t / (12.0 * (1.0 - nu * nu));
+  m.shell_hinges.add_mesh(pm.triangles, m.reference, d);
   SheetMesh& mesh = sheet.mesh;
   mesh.spec = meshing.spec;
   mesh.vertices = n;
@@ -158,6 +158,7 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
   mesh.mean_edge = edges / (3.0 * mesh.triangles);
   mesh.narrowest = meshing.narrowest;
   find_rim(sheet.triangles, m.reference, mesh);
+  m.angle_defects.add_mesh(pm.triangles, m.reference, d, angle_defect_coefficient(nu), mesh.rim);
   return sheet;
 }
 

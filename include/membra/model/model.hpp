@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "membra/core/vec.hpp"
+#include "membra/model/elements/angle_defects.hpp"
 #include "membra/model/elements/bending.hpp"
 #include "membra/model/elements/hinges.hpp"
 #include "membra/model/elements/membrane_triangles.hpp"
@@ -21,6 +22,7 @@ struct Model {
   Hinges hinges;    // bilayer moments; empty unless resin was applied as a bilayer
   MembraneTriangles membrane_triangles;  // the continuum sheet; empty on a lattice
   ShellHinges shell_hinges;              // its bending; empty on a lattice
+  AngleDefects angle_defects;            // its bending's Gaussian-curvature term
   Points reference;               // paper position of each particle in the flat natural sheet, m
   Vec3 gravity = Vec3::Zero();    // acceleration, m/s^2
   double velocity_damping = 0.0;  // D, 1/s: every particle feels -D m v
@@ -35,6 +37,7 @@ struct Model {
     f(hinges);
     f(membrane_triangles);
     f(shell_hinges);
+    f(angle_defects);
   }
   template <typename F>
   void for_each_set(F&& f) {
@@ -43,6 +46,7 @@ struct Model {
     f(hinges);
     f(membrane_triangles);
     f(shell_hinges);
+    f(angle_defects);
   }
 
   // Calls f(set, other's set of the same kind) for every element set, in the same order.
@@ -53,6 +57,7 @@ struct Model {
     f(hinges, other.hinges);
     f(membrane_triangles, other.membrane_triangles);
     f(shell_hinges, other.shell_hinges);
+    f(angle_defects, other.angle_defects);
   }
 
   int num_particles() const { return static_cast<int>(mass.size()); }
