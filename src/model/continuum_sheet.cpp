@@ -117,7 +117,7 @@ SheetMeshing mesh_sheet(const ContinuumSpec& s) {
 Sheet build_continuum_sheet(const ContinuumSpec& s) {
   const Material& mat = s.material;
   if (!(mat.youngs_modulus > 0.0) || !(mat.thickness > 0.0) || !(mat.density > 0.0))
-    throw std::invalid_argument("sheet material: E, thickness and density must be positive");
+    throw std::invalid_argument("sheet.material: E, thickness and density must be positive");
   const SheetMeshing meshing = mesh_sheet(s);
   const PlanarMesh& pm = meshing.mesh;
   Sheet sheet;

@@ -1,5 +1,6 @@
 #include "membra/process/prepare.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "membra/core/input_error.hpp"
@@ -60,12 +61,24 @@ void check_continuum_protocol(const Scene& scene) {
                      "graded mesh (set it to 0)");
 }
 
+// The mesher's message "sheet.mesh.max_edge: must be positive" as an InputError at
+// /sheet/mesh/max_edge; the material's at /sheet/material.
+InputError mesh_error(const std::string& what) {
+  const size_t colon = what.find(": ");
+  const std::string path = colon == std::string::npos ? "" : what.substr(0, colon);
+  if (path.rfind("sheet", 0) != 0 || path.find(' ') != std::string::npos)
+    return InputError("/sheet/mesh", what);
+  std::string pointer = "/" + path;
+  std::replace(pointer.begin(), pointer.end(), '.', '/');
+  return InputError(pointer, what.substr(colon + 2));
+}
+
 Sheet continuum_sheet(const Scene& scene) {
   check_continuum_protocol(scene);
   try {
     return build_continuum_sheet(continuum_spec(scene));
   } catch (const std::invalid_argument& e) {
-    throw InputError("/sheet/mesh", e.what());
+    throw mesh_error(e.what());
   }
 }
 

@@ -114,6 +114,21 @@ TEST(Scene, ReadsTheModelItsMeshAndTheLaws) {
   EXPECT_EQ(parse_scene(k).model, SheetModel::continuum);
 }
 
+// What only the mesher finds is named at the mesh's field, before anything runs.
+TEST(Scene, ContinuumMeshErrorsNameTheField) {
+  json j = minimal();
+  j["model"] = "continuum";
+  j["sheet"]["mesh"] = {{"max_edge", 0.01}};  // mm: billions of triangles on 100 x 50 mm
+  try {
+    prepare_scene(parse_scene(j));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "/sheet/mesh");
+    EXPECT_NE(e.detail().find("triangles"), std::string::npos) << e.detail();
+    EXPECT_NE(e.detail().rfind("about", 0), std::string::npos) << e.detail();
+  }
+}
+
 TEST(Scene, ErrorsNameTheJsonPointer) {
   struct Case {
     const char* patch;  // JSON merge patch applied to minimal()
