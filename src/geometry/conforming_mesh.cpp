@@ -199,7 +199,7 @@ PlanarMesh conforming_mesh(const MeshRequest& request) {
   while (!mesher.is_refinement_done()) {
     mesher.step_by_step_refine_mesh();
     if (static_cast<long>(cdt.number_of_vertices()) > request.max_vertices)
-      throw std::runtime_error("mesh: more than " + std::to_string(request.max_vertices) +
+      throw std::runtime_error("more than " + std::to_string(request.max_vertices) +
                                " vertices; raise max_edge or lower elements_across");
   }
   return extract(cdt, request.outline);

@@ -109,7 +109,7 @@ SheetMeshing mesh_sheet(const ContinuumSpec& s) {
   request.constraints = s.features;
   request.size = [&size](const Vec2& p) { return size(p); };
   request.min_angle_deg = m.min_angle_deg;
-  request.max_vertices = static_cast<long>(kMaxTriangles);
+  request.max_vertices = static_cast<long>(kMaxTriangles / 2);  // about two triangles a vertex
   out.mesh = conforming_mesh(request);
   return out;
 }
@@ -158,7 +158,7 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
   mesh.mean_edge = edges / (3.0 * mesh.triangles);
   mesh.narrowest = meshing.narrowest;
   find_rim(sheet.triangles, m.reference, mesh);
-  m.angle_defects.add_mesh(pm.triangles, m.reference, d, angle_defect_coefficient(nu), mesh.rim);
+  m.angle_defects.add_mesh(pm.triangles, m.reference, angle_defect_coefficient(nu) * d, mesh.rim);
   return sheet;
 }
 

@@ -79,6 +79,8 @@ Sheet continuum_sheet(const Scene& scene) {
     return build_continuum_sheet(continuum_spec(scene));
   } catch (const std::invalid_argument& e) {
     throw mesh_error(e.what());
+  } catch (const std::runtime_error& e) {  // the mesher's vertex cap
+    throw InputError("/sheet/mesh", e.what());
   }
 }
 
@@ -130,7 +132,8 @@ PreparedScene prepare_continuum(const Scene& scene) {
 }  // namespace
 
 PreparedScene prepare_scene(const Scene& scene) {
-  check_memory(scene, machine_memory());  // before allocating anything
+  // Before allocating anything; the continuum sheet's mesher estimates its own size.
+  if (scene.model == SheetModel::lattice) check_memory(scene, machine_memory());
   if (scene.benchmark_n > 0) return prepare_benchmark(scene);
   if (scene.model == SheetModel::continuum && scene.benchmark_n == 0)
     return prepare_continuum(scene);

@@ -52,8 +52,8 @@ TEST(AngleDefects, WithTheHingesASphereAndASaddleStoreThePlateEnergy) {
   ShellHinges h;
   h.add_mesh(m.triangles, m.x, kPlateD);
   AngleDefects a;
-  a.add_mesh(m.triangles, m.x, kPlateD, angle_defect_coefficient(0.5), m.rim);
-  EXPECT_DOUBLE_EQ(a.coefficient, 5.0 / 3.0);
+  EXPECT_DOUBLE_EQ(angle_defect_coefficient(0.5), 5.0 / 3.0);
+  a.add_mesh(m.triangles, m.x, angle_defect_coefficient(0.5) * kPlateD, m.rim);
   double owned = 0.0;
   for (const auto& s : h.side_area) owned += (s[0] + s[1]) / 3.0;
   const double r = 0.5;
@@ -85,8 +85,9 @@ TEST(AngleDefects, GradientAndHessianMatchFiniteDifferences) {
   rest.col(2) = Vec3(0.003, 0.009, 0.0);
   for (int trial = 0; trial < 4; ++trial) {
     AngleDefects a;
-    // Corners 0 and 2 interior, 1 on the rim.
-    a.add_mesh({{0, 1, 2}}, rest, kPlateD, 5.0 / 3.0, {1});
+    // Corners 0 and 2 interior, 1 on the rim, the two of different weights.
+    a.add_mesh({{0, 1, 2}}, rest, 5.0 / 3.0 * kPlateD, {1});
+    a.weight[0][2] *= 3.0;
     Points x = rest;
     for (int k = 0; k < 9; ++k) x(k % 3, k / 3) += 0.003 * u(rng);
     expect_kernel_matches_finite_differences(a, x, "angle defects");

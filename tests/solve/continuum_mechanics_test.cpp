@@ -61,7 +61,7 @@ TEST(ContinuumMechanics, CompressedStripBucklesNearTheEulerStrain) {
   const double euler = std::numbers::pi * std::numbers::pi / 12.0 * (t / length) * (t / length);
   const double with = buckling_strain(s, length, euler) / euler;
   Sheet hinges_only = s;
-  for (double& w : hinges_only.model.angle_defects.weight) w = 0.0;
+  for (auto& w : hinges_only.model.angle_defects.weight) w = {0.0, 0.0, 0.0};
   const double without = buckling_strain(hinges_only, length, euler) / euler;
   std::printf("continuum buckling strain / Euler: %.4f, hinges alone %.4f (%d particles)\n", with,
               without, s.model.num_particles());

@@ -3,11 +3,12 @@
 // continuum shell"). The shell hinges alone store (D/2)(4H^2 - (8/3)K) per unit area on smooth
 // bends of near-equilateral meshes, where Kirchhoff's plate stores (D/2)(4H^2 - 2(1 - nu)K);
 // this set adds the difference, (D/2) c K with c = 8/3 - 2(1 - nu), as discrete Gaussian
-// curvature: the angle defect 2 pi - sum of angles at each interior particle. Per triangle that
-// is w (sum over its corners at interior particles of theta0 - theta), w = c D / 2 of the
-// triangle's plate, theta its corner angles now and theta0 on the flat natural sheet. For a
-// uniform plate the sum is a boundary term (Gauss-Bonnet): it acts at free edges and where the
-// plate's stiffness changes, as the nu term of plate theory does.
+// curvature: w_v (2 pi - sum of angles) at each interior particle v, w_v = c D / 2 averaged over
+// the particle's triangles by area. Per triangle that is the sum over its corners at interior
+// particles of w_v (theta0 - theta), theta the corner angle now and theta0 on the flat natural
+// sheet (a triangle's angles always sum to pi, so only corners of different weights, or on the
+// rim, store anything). For a uniform plate the sum is a boundary term (Gauss-Bonnet): it acts at
+// free edges and where the plate's stiffness changes, as the nu term of plate theory does.
 #include <array>
 #include <string_view>
 #include <vector>
@@ -29,21 +30,26 @@ struct AngleDefects {
 
   std::vector<std::array<int, 3>> v;          // the triangles, counter-clockwise
   std::vector<std::array<double, 3>> rest;    // theta0 of each corner, rad
-  std::vector<std::array<bool, 3>> interior;  // the corner's particle is off the rim
-  std::vector<double> weight;                 // w = c D / 2, J per rad
-  // Material state: the plate's D (N m), whether it took the resin's, and c.
-  std::vector<double> plate;
+  std::vector<std::array<double, 3>> weight;  // w_v of each corner's particle (0 on the rim), J
+  // Material state: each triangle's c D (latex and resin each with its own nu's c, N m), its
+  // rest area (m^2), whether it took the resin, and its corners' particles off the rim.
+  std::vector<double> plate, area;
   std::vector<bool> resin;
-  double coefficient = 0.0;
+  std::vector<std::array<bool, 3>> interior;
 
   int size() const { return static_cast<int>(v.size()); }
   std::array<int, 3> ids(int i) const { return v[static_cast<size_t>(i)]; }
-  bool active(int i) const { return weight[static_cast<size_t>(i)] != 0.0; }
-  // A term on every triangle of a mesh at rest at `reference`, plate stiffness d, coefficient c;
-  // corners at the particles `on_rim` (sorted or not) take no part.
-  void add_mesh(const std::vector<std::array<int, 3>>& triangles, const Points& reference, double d,
-                double c, const std::vector<int>& on_rim);
+  bool active(int i) const {
+    const auto& w = weight[static_cast<size_t>(i)];
+    return w[0] != 0.0 || w[1] != 0.0 || w[2] != 0.0;
+  }
+  // A term on every triangle of a mesh at rest at `reference`, c D = cd; corners at the
+  // particles `on_rim` (sorted or not) take no part.
+  void add_mesh(const std::vector<std::array<int, 3>>& triangles, const Points& reference,
+                double cd, const std::vector<int>& on_rim);
   void filter(const std::vector<bool>& keep);
+  // w_v of every particle from its triangles' c D, averaged by area (after the plates change).
+  void update_weights();
 
   // Kernel.
   double energy(int i, const Points& x) const;
@@ -55,7 +61,7 @@ struct AngleDefects {
   void update(const ReleaseLevel&) {}
   void begin_release(const Points&) {}
   // Resin rule, as the shell hinges': a triangle whose centroid lies in the pattern adds the
-  // resin's plate to its D, once.
+  // resin's plate to its D (with the resin's c, nu 1/3), once; the weights follow.
   int impregnate(const Impregnation& at);
   bool severed(int i, const CrossesCut& crosses) const;
   void carry(const AngleDefects& old, const Rebuild& r);
