@@ -1,5 +1,7 @@
 #pragma once
 // Checks shared by the element and mechanics tests (they link membra).
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -39,6 +41,34 @@ void expect_kernel_matches_finite_differences(const Set& s, const Points& x, con
   using Eigensolver = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, n, n>>;
   EXPECT_GE(Eigensolver(s.hessian(0, x, true)).eigenvalues().minCoeff(), -1e-9 * hess.norm())
       << what;
+}
+
+// A flat patch of equilateral triangles for the bending tests: its positions, counter-clockwise
+// triangles and the particles on its rim.
+struct TriPatch {
+  Points x;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> rim;
+};
+
+// An (n + 1)^2 patch of equilateral triangles of side h, turned by `angle`, with its rim.
+inline TriPatch tri_patch(int n, double h, double angle) {
+  TriPatch m;
+  m.x = Points::Zero(3, (n + 1) * (n + 1));
+  const double c = std::cos(angle), s = std::sin(angle);
+  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double u = (i + 0.5 * j) * h, w = j * h * std::sqrt(3.0) / 2.0;
+      m.x.col(id(i, j)) = Vec3(c * u - s * w, s * u + c * w, 0.0);
+      if (i == 0 || j == 0 || i == n || j == n) m.rim.push_back(id(i, j));
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+      m.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return m;
 }
 
 // The smallest eigenvalue of the energy's Hessian in the out-of-plane (z) coordinates of the

@@ -17,32 +17,6 @@ namespace {
 
 constexpr double kPlateD = 1.5e6 * 1.25e-10 / 9.0;  // N m: latex, nu 1/2
 
-struct TriPatch {
-  Points x;
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<int> rim;
-};
-
-// An (n + 1)^2 patch of equilateral triangles of side h, turned by `angle`, with its rim.
-TriPatch tri_patch(int n, double h, double angle) {
-  TriPatch m;
-  m.x = Points::Zero(3, (n + 1) * (n + 1));
-  const double c = std::cos(angle), s = std::sin(angle);
-  auto id = [n](int i, int j) { return j * (n + 1) + i; };
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double u = (i + 0.5 * j) * h, w = j * h * std::sqrt(3.0) / 2.0;
-      m.x.col(id(i, j)) = Vec3(c * u - s * w, s * u + c * w, 0.0);
-      if (i == 0 || j == 0 || i == n || j == n) m.rim.push_back(id(i, j));
-    }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
-      m.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return m;
-}
-
 // Kirchhoff's plate stores (D/2)(k1^2 + k2^2 + 2 nu k1 k2): with nu = 1/2, 3 (D/2) k^2 on a
 // sphere and 1 on a saddle per unit area. The hinges alone store 4/3 and 8/3; with the angle
 // defects the sum is the plate's, within 5 % (the rim's cells are counted by neither quite

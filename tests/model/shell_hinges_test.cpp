@@ -17,30 +17,6 @@ namespace {
 
 constexpr double kD = 1.5e6 * 1.25e-10 / 9.0;  // N m: latex, E t^3 / (12 (1 - nu^2)), nu 1/2
 
-struct EquilateralPatch {
-  Points x;
-  std::vector<std::array<int, 3>> triangles;
-};
-
-// An (n + 1)^2 patch of equilateral triangles of side h, turned by `angle` in the plane.
-EquilateralPatch equilateral(int n, double h, double angle) {
-  EquilateralPatch m;
-  m.x = Points::Zero(3, (n + 1) * (n + 1));
-  const double c = std::cos(angle), s = std::sin(angle);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double u = (i + 0.5 * j) * h, w = j * h * std::sqrt(3.0) / 2.0;
-      m.x.col(j * (n + 1) + i) = Vec3(c * u - s * w, s * u + c * w, 0.0);
-    }
-  auto id = [n](int i, int j) { return j * (n + 1) + i; };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
-      m.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return m;
-}
-
 // Wraps the flat sheet onto a cylinder of radius r about an axis along y, lengths kept.
 Points on_cylinder(const Points& flat, double r) {
   Points x = flat;
@@ -57,7 +33,7 @@ Points on_cylinder(const Points& flat, double r) {
 // their two triangles each), at two radii (the constant of k = (D/2)|e|^2/A_e).
 TEST(ShellHinges, ABentCylinderStoresThePlateEnergy) {
   for (double angle : {0.0, 0.3, std::acos(-1.0) / 6.0, 1.2}) {
-    const EquilateralPatch m = equilateral(30, 0.002, angle);
+    const TriPatch m = tri_patch(30, 0.002, angle);
     ShellHinges h;
     ASSERT_GT(h.add_mesh(m.triangles, m.x, kD), 0);
     double owned = 0.0;
@@ -75,7 +51,7 @@ TEST(ShellHinges, ABentCylinderStoresThePlateEnergy) {
 // Poisson ratio of -1/3 whatever D's nu; the Kirchhoff plate with nu = 1/2 stores 3 and 1 times
 // it (docs/model.md). Pinned here so that a correction shows as a change.
 TEST(ShellHinges, OnASphereAndASaddleTheCouplingIsMinusAThird) {
-  const EquilateralPatch m = equilateral(30, 0.002, 0.2);
+  const TriPatch m = tri_patch(30, 0.002, 0.2);
   ShellHinges h;
   h.add_mesh(m.triangles, m.x, kD);
   double owned = 0.0;
