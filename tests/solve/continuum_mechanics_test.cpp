@@ -47,11 +47,11 @@ double buckling_strain(const Sheet& s, double length, double guess) {
 
 // A 100 x 10 mm latex strip held at both ends, four elements across: Euler's strain for a strip
 // of free sides is the beam's, (pi^2/12)(t/L)^2 (the plate's D (1 - nu^2) = E t^3 / 12 once the
-// strip takes its anticlastic curvature). The shell hinges alone, with their coupling of -1/3,
-// buckle it at (8/9)(4/3) = 1.19 times that (1.19 measured); the angle defects bring it down
-// towards the plate's (1.16 measured, 1.12 at eight across). The 5 % is not reached yet
-// (docs/model.md): held here within 20 %, and the correction's direction.
-TEST(ContinuumMechanics, CompressedStripBucklesNearTheEulerStrain) {
+// strip takes its anticlastic curvature, which the plate's own nu lets it take). Measured 0.92
+// here and 0.95 at eight across (docs/model.md): the triangles along the free sides, whose
+// curvature meets a moment-free condition rather than a neighbour, are a little soft, less so as
+// they narrow. Held within 10 %, the 5 % reached only on finer meshes.
+TEST(ContinuumMechanics, CompressedStripBucklesAtTheEulerStrain) {
   const double length = 0.1, t = 0.5e-3;
   ContinuumSpec spec;
   spec.width = length, spec.height = 0.01;
@@ -59,15 +59,10 @@ TEST(ContinuumMechanics, CompressedStripBucklesNearTheEulerStrain) {
   Sheet s = build_continuum_sheet(spec);
   apply_pins({{PinSpec::Kind::edge, "left"}, {PinSpec::Kind::edge, "right"}}, s.grid, s.model);
   const double euler = std::numbers::pi * std::numbers::pi / 12.0 * (t / length) * (t / length);
-  const double with = buckling_strain(s, length, euler) / euler;
-  Sheet hinges_only = s;
-  for (auto& w : hinges_only.model.angle_defects.weight) w = {0.0, 0.0, 0.0};
-  const double without = buckling_strain(hinges_only, length, euler) / euler;
-  std::printf("continuum buckling strain / Euler: %.4f, hinges alone %.4f (%d particles)\n", with,
-              without, s.model.num_particles());
-  EXPECT_NEAR(without, 32.0 / 27.0, 0.02);  // the hinges' coupling, as predicted
-  EXPECT_LT(with, without - 0.01);
-  EXPECT_NEAR(with, 1.0, 0.2);
+  const double ratio = buckling_strain(s, length, euler) / euler;
+  std::printf("continuum buckling strain / Euler: %.4f (%d particles)\n", ratio,
+              s.model.num_particles());
+  EXPECT_NEAR(ratio, 1.0, 0.1);
 }
 
 }  // namespace

@@ -5,11 +5,10 @@
 #include <vector>
 
 #include "membra/core/vec.hpp"
-#include "membra/model/elements/angle_defects.hpp"
 #include "membra/model/elements/bending.hpp"
 #include "membra/model/elements/hinges.hpp"
 #include "membra/model/elements/membrane_triangles.hpp"
-#include "membra/model/elements/shell_hinges.hpp"
+#include "membra/model/elements/shell_triangles.hpp"
 #include "membra/model/elements/springs.hpp"
 
 namespace membra {
@@ -21,8 +20,7 @@ struct Model {
   Bending bending;  // plate bending; empty when the sheet has none
   Hinges hinges;    // bilayer moments; empty unless resin was applied as a bilayer
   MembraneTriangles membrane_triangles;  // the continuum sheet; empty on a lattice
-  ShellHinges shell_hinges;              // its bending; empty on a lattice
-  AngleDefects angle_defects;            // its bending's Gaussian-curvature term
+  ShellTriangles shell_triangles;        // its bending; empty on a lattice
   Points reference;               // paper position of each particle in the flat natural sheet, m
   Vec3 gravity = Vec3::Zero();    // acceleration, m/s^2
   double velocity_damping = 0.0;  // D, 1/s: every particle feels -D m v
@@ -36,8 +34,7 @@ struct Model {
     f(bending);
     f(hinges);
     f(membrane_triangles);
-    f(shell_hinges);
-    f(angle_defects);
+    f(shell_triangles);
   }
   template <typename F>
   void for_each_set(F&& f) {
@@ -45,8 +42,7 @@ struct Model {
     f(bending);
     f(hinges);
     f(membrane_triangles);
-    f(shell_hinges);
-    f(angle_defects);
+    f(shell_triangles);
   }
 
   // Calls f(set, other's set of the same kind) for every element set, in the same order.
@@ -56,8 +52,7 @@ struct Model {
     f(bending, other.bending);
     f(hinges, other.hinges);
     f(membrane_triangles, other.membrane_triangles);
-    f(shell_hinges, other.shell_hinges);
-    f(angle_defects, other.angle_defects);
+    f(shell_triangles, other.shell_triangles);
   }
 
   int num_particles() const { return static_cast<int>(mass.size()); }
