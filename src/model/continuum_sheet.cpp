@@ -82,10 +82,24 @@ Polygon2 sheet_outline(double width, double height, bool disk, double tolerance)
   return out;
 }
 
+namespace {
+
+[[noreturn]] void too_many_triangles(double count) {
+  throw std::invalid_argument("sheet.mesh: about " + std::to_string(static_cast<long>(count)) +
+                              " triangles, more than membra meshes (2 million); raise max_edge "
+                              "or lower elements_across");
+}
+
+}  // namespace
+
 SheetMeshing mesh_sheet(const ContinuumSpec& s) {
   SheetMeshing out;
   out.spec = resolved(s);
   const MeshSpec& m = out.spec;
+  // Elements no larger than max_edge: at least this many, known before the size field is built
+  // (which for a max_edge far too small would itself take long).
+  const double at_least = s.width * s.height / (std::sqrt(3.0) / 4.0 * m.max_edge * m.max_edge);
+  if (at_least > kMaxTriangles) too_many_triangles(at_least);
   const Polygon2 outline = sheet_outline(s.width, s.height, s.disk, m.tolerance);
   std::vector<Polyline2> boundaries(s.features.begin(), s.features.end());
   boundaries.push_back(outline);
@@ -99,11 +113,7 @@ SheetMeshing mesh_sheet(const ContinuumSpec& s) {
         mm(out.narrowest.at.x()) + ", " + mm(out.narrowest.at.y()) +
         ") mm on the natural sheet is narrower than the mesher resolves (elements of " +
         mm(finest) + " mm, below 10 x the chord tolerance); widen it or lower elements_across");
-  if (size.expected_triangles() > kMaxTriangles)
-    throw std::invalid_argument("sheet.mesh: about " +
-                                std::to_string(static_cast<long>(size.expected_triangles())) +
-                                " triangles, more than membra meshes (2 million); raise max_edge "
-                                "or lower elements_across");
+  if (size.expected_triangles() > kMaxTriangles) too_many_triangles(size.expected_triangles());
   MeshRequest request;
   request.outline = outline;
   request.constraints = s.features;
@@ -148,7 +158,7 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
       mat.law == MembraneLaw::neo_hookean || mat.law == MembraneLaw::mooney_rivlin;
   const double nu = incompressible ? 0.5 : 1.0 / 3.0, t = mat.thickness;
   const double d = mat.youngs_modulus * t * t * t / (12.0 * (1.0 - nu * nu));
-  m.shell_hinges.add_mesh(pm.triangles, m.reference, d);
+  m.shell_triangles.add_mesh(pm.triangles, m.reference, d, nu);
   SheetMesh& mesh = sheet.mesh;
   mesh.spec = meshing.spec;
   mesh.vertices = n;
@@ -158,7 +168,6 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
   mesh.mean_edge = edges / (3.0 * mesh.triangles);
   mesh.narrowest = meshing.narrowest;
   find_rim(sheet.triangles, m.reference, mesh);
-  m.angle_defects.add_mesh(pm.triangles, m.reference, angle_defect_coefficient(nu) * d, mesh.rim);
   return sheet;
 }
 
