@@ -23,69 +23,103 @@ template <typename T>
 using V3 = Eigen::Matrix<T, 3, 1>;
 template <typename T>
 using M2 = Eigen::Matrix<T, 2, 2>;
-using Grad = Eigen::AutoDiffScalar<Eigen::Matrix<double, 18, 1>>;
-using Hess = Eigen::AutoDiffScalar<Eigen::Matrix<Grad, 18, 1>>;
+using Grad = Eigen::AutoDiffScalar<Eigen::Matrix<double, 12, 1>>;
+using Hess = Eigen::AutoDiffScalar<Eigen::Matrix<Grad, 12, 1>>;
 
 // The plates' bilinear form: sum over layers of A (D/2) [nu tr(Ma) tr(Mb) + (1 - nu) tr(Ma Mb)],
 // M = G^-1 X; the energy is Q(II, II).
-template <typename T>
-T plate_form(const std::array<const PlateLayer*, 2>& layers, const M2<T>& a, const M2<T>& b) {
-  T q(0.0);
+double plate_form(const std::array<const PlateLayer*, 2>& layers, const Eigen::Matrix2d& a,
+                  const Eigen::Matrix2d& b) {
+  double q = 0.0;
   for (const PlateLayer* l : layers) {
     if (!(l->area > 0.0) || l->d == 0.0) continue;
-    const M2<T> ga = l->metric_inverse.cast<T>() * a, gb = l->metric_inverse.cast<T>() * b;
-    q += T(0.5 * l->area * l->d) *
-         (T(l->nu) * ga.trace() * gb.trace() + T(1.0 - l->nu) * (ga * gb).trace());
+    const Eigen::Matrix2d ga = l->metric_inverse * a, gb = l->metric_inverse * b;
+    q += 0.5 * l->area * l->d *
+         (l->nu * ga.trace() * gb.trace() + (1.0 - l->nu) * (ga * gb).trace());
   }
   return q;
 }
 
-// The second fundamental form II (edge coordinates u, v of p = x0 + u e1 + v e2) is the Hessian
-// H of the quadratic that vanishes at the corners, q = (H11 u^2 + 2 H12 uv + H22 v^2 - H11 u -
-// H22 v) / 2, and meets each far corner's height over the face's plane: row k of the fit (its
-// (u, v) on the natural sheet). A free edge (on the rim, or against a much softer neighbour)
-// has no height to meet; its row asks instead that the moment across it vanish, the plate's
-// condition at a free edge: dE/dII : (c c^T) = 0, c the edge's conormal in (u, v) (metric-free:
-// it annihilates the edge's direction). Across a resin edge this leaves the kink to the latex,
-// as plates in series share it. (Minimizing the energy over the free height instead also relaxes
-// curvature along the edge: a strip then buckled 9 % below Euler's load.) The 3 x 3 system
-// depends on the rest state only; its pseudo-inverse keeps a degenerate fit finite.
+// The weight of the mid-edge estimate against the fit's rows (which are O(1)): small enough to
+// move a well-posed fit by well under 1 %, large enough to bound a degenerate one.
+constexpr double kPrior = 1e-3;
+
+// The six geometric scalars a triangle's curvature is read from, each of its three corners and
+// one far corner p3 (edge k lies opposite corner k): m < 3, the far corner's height over the
+// face's plane; m >= 3, the mid-edge reading of edge k = m - 3, s_k = (x_{k+1} + x_{k+2} - 2 x_k)
+// . m_k / |m_k|, m_k the mean of the face's and the neighbour's (x_{k+2}, x_{k+1}, p3) normals.
 template <typename T>
-T stencil_energy(const ShellTriangles& s, int i, const std::array<V3<T>, 6>& q) {
+T geometric(int m, const std::array<V3<T>, 4>& p) {
+  const V3<T> n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
+  if (m < 3) return (p[3] - p[0]).dot(n);
+  const auto k = static_cast<size_t>(m - 3);
+  const V3<T>&a = p[(k + 1) % 3], &b = p[(k + 2) % 3];
+  const V3<T> mk = n + (a - b).cross(p[3] - b).normalized();
+  return (a + b - p[k] * T(2.0)).dot(mk) / mk.norm();
+}
+
+// The stencil position (0..17) of local coordinate c (0..11) of scalar m's four points.
+int stencil_dof(int m, int c) {
+  return c < 9 ? c : 9 + 3 * (m % 3) + (c - 9);
+}
+
+}  // namespace
+
+// The linear map from the six scalars to the curvature H = (H11, H12, H22) in the edge
+// coordinates, and the plates' quadratic form on H (E = H^T Q H). The second fundamental form is
+// the Hessian of the quadratic that vanishes at the corners, (H11 u^2 + 2 H12 uv + H22 v^2 -
+// H11 u - H22 v) / 2, and meets each far corner's height: row k of the fit (its (u, v) on the
+// natural sheet). A free edge (on the rim, or against a much softer neighbour) has no height to
+// meet; its row asks instead that the moment across it vanish, the plate's condition at a free
+// edge: dE/dII : (c c^T) = 0, c the edge's conormal in (u, v) (metric-free: it annihilates the
+// edge's direction). Across a resin edge this leaves the kink to the latex, as plates in series
+// share it. (Minimizing the energy over the free height instead also relaxes curvature along the
+// edge: a strip then buckled 9 % below Euler's load.) The rows are solved by least squares with
+// a weak pull (kPrior) towards the mid-edge estimate H11 = -(s0 + s1), H12 = -s0,
+// H22 = -(s0 + s2) (exact on symmetric neighbours only): where the far corners lie on the
+// triangle's circumcircle, as across every right triangle's hypotenuse, the fit cannot see the
+// circle's quadratic, and the mid-edge normals fill it in.
+ShellTriangles::Plan ShellTriangles::plan(int i) const {
   const auto k0 = static_cast<size_t>(i);
-  const std::array<bool, 3> free = s.free_edges(i);
-  const std::array<const PlateLayer*, 2> layers{&s.latex[k0], &s.resin[k0]};
+  Plan out;
+  out.free = free_edges(i);
+  const std::array<const PlateLayer*, 2> layers{&latex[k0], &resin[k0]};
   static const std::array<Eigen::Matrix2d, 3> unit{(Eigen::Matrix2d() << 1, 0, 0, 0).finished(),
                                                    (Eigen::Matrix2d() << 0, 1, 1, 0).finished(),
                                                    (Eigen::Matrix2d() << 0, 0, 0, 1).finished()};
   static const std::array<Eigen::Matrix2d, 3> conormal{
       (Eigen::Matrix2d() << 1, 1, 1, 1).finished(), (Eigen::Matrix2d() << 1, 0, 0, 0).finished(),
       (Eigen::Matrix2d() << 0, 0, 0, 1).finished()};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      out.form(r, c) =
+          plate_form(layers, unit[static_cast<size_t>(r)], unit[static_cast<size_t>(c)]);
   Eigen::Matrix3d a;
   for (size_t k = 0; k < 3; ++k) {
-    if (!free[k]) {
-      a.row(static_cast<Eigen::Index>(k)) = s.fit[k0][k].transpose();
+    const auto row = static_cast<Eigen::Index>(k);
+    if (!out.free[k]) {
+      a.row(row) = fit[k0][k].transpose();
       continue;
     }
-    Eigen::RowVector3d row;
+    Eigen::RowVector3d moment;
     for (size_t j = 0; j < 3; ++j)
-      row[static_cast<Eigen::Index>(j)] = plate_form<double>(layers, conormal[k], unit[j]);
-    a.row(static_cast<Eigen::Index>(k)) = row / std::max(row.norm(), 1e-300);
+      moment[static_cast<Eigen::Index>(j)] = plate_form(layers, conormal[k], unit[j]);
+    a.row(row) = moment / std::max(moment.norm(), 1e-300);
   }
-  const Eigen::Matrix3d inv = a.completeOrthogonalDecomposition().pseudoInverse();
-  const V3<T> n = (q[1] - q[0]).cross(q[2] - q[0]).normalized();
-  std::array<T, 3> height;
-  for (size_t k = 0; k < 3; ++k) height[k] = free[k] ? T(0.0) : (q[3 + k] - q[0]).dot(n);
-  M2<T> ii = M2<T>::Constant(T(0.0));
-  for (size_t j = 0; j < 3; ++j) {
-    T h(0.0);
-    for (size_t k = 0; k < 3; ++k)
-      if (!free[k])
-        h += T(inv(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(k))) * height[k];
-    ii += unit[j].cast<T>() * h;
-  }
-  return plate_form(layers, ii, ii);
+  const Eigen::Matrix3d solve =
+      (a.transpose() * a + kPrior * Eigen::Matrix3d::Identity()).inverse();
+  Eigen::Matrix<double, 3, 6> scalars = Eigen::Matrix<double, 3, 6>::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (!out.free[static_cast<size_t>(k)]) scalars.col(k) = a.row(k).transpose();
+  Eigen::Matrix3d mid;  // (H11, H12, H22) from (s0, s1, s2)
+  mid << -1, -1, 0, -1, 0, 0, -1, 0, -1;
+  for (int k = 0; k < 3; ++k)
+    if (!out.free[static_cast<size_t>(k)]) scalars.col(3 + k) = kPrior * mid.col(k);
+  out.map = solve * scalars;
+  return out;
 }
+
+namespace {
 
 PlateLayer plate_at(const Eigen::Matrix2d& metric, double d, double nu) {
   const double det = metric.determinant();
@@ -182,39 +216,91 @@ std::array<bool, 3> ShellTriangles::free_edges(int i) const {
 
 double ShellTriangles::energy(int i, const Points& x) const {
   const auto& p = v[static_cast<size_t>(i)];
-  std::array<V3<double>, 6> q;
-  for (size_t c = 0; c < 6; ++c) q[c] = x.col(p[c]);
-  return stencil_energy(*this, i, q);
+  const Plan pl = plan(i);
+  Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
+  for (int m = 0; m < 6; ++m) {
+    if (pl.free[static_cast<size_t>(m % 3)]) continue;
+    const std::array<V3<double>, 4> q{x.col(p[0]), x.col(p[1]), x.col(p[2]), x.col(p[3 + m % 3])};
+    g[m] = geometric(m, q);
+  }
+  const Eigen::Vector3d h = pl.map * g;
+  return h.dot(pl.form * h);
+}
+
+// The scalars' values and gradients (6 x 18), and with `second` each one's Hessian (12 x 12 over
+// its four points), by dual numbers over 12 coordinates.
+struct ShellScalars {
+  Eigen::Matrix<double, 6, 1> value = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, 6, 18> gradient = Eigen::Matrix<double, 6, 18>::Zero();
+  std::array<Eigen::Matrix<double, 12, 12>, 6> hessian{};
+};
+
+void ShellTriangles::scalars(int i, const Points& x, const Plan& pl, bool second,
+                             ShellScalars& out) const {
+  const auto& p = v[static_cast<size_t>(i)];
+  for (int m = 0; m < 6; ++m) {
+    if (pl.free[static_cast<size_t>(m % 3)]) continue;
+    const std::array<int, 4> pts{p[0], p[1], p[2], p[3 + m % 3]};
+    if (!second) {
+      std::array<V3<Grad>, 4> q;
+      for (int c = 0; c < 12; ++c)
+        q[static_cast<size_t>(c / 3)][c % 3] =
+            Grad(x(c % 3, pts[static_cast<size_t>(c / 3)]), 12, c);
+      const Grad g = geometric(m, q);
+      out.value[m] = g.value();
+      for (int c = 0; c < 12; ++c) out.gradient(m, stencil_dof(m, c)) += g.derivatives()[c];
+      continue;
+    }
+    std::array<V3<Hess>, 4> q;
+    for (int c = 0; c < 12; ++c) {
+      Hess& h = q[static_cast<size_t>(c / 3)][c % 3];
+      h.value() = Grad(x(c % 3, pts[static_cast<size_t>(c / 3)]), 12, c);
+      h.derivatives() = Eigen::Matrix<Grad, 12, 1>::Constant(Grad(0.0));
+      h.derivatives()[c] = Grad(1.0);
+    }
+    const Hess g = geometric(m, q);
+    out.value[m] = g.value().value();
+    for (int c = 0; c < 12; ++c) {
+      out.gradient(m, stencil_dof(m, c)) += g.value().derivatives()[c];
+      out.hessian[static_cast<size_t>(m)].row(c) = g.derivatives()[c].derivatives().transpose();
+    }
+  }
 }
 
 void ShellTriangles::add_forces(const Points& x, const Points*, int begin, int end,
                                 Points& f) const {
+  ShellScalars sc;
   for (int i = begin; i < end; ++i) {
     if (!active(i)) continue;
+    const Plan pl = plan(i);
+    sc.value.setZero();
+    sc.gradient.setZero();
+    scalars(i, x, pl, false, sc);
+    // E = h^T Q h, h = L g: dE/dx = 2 (Q h)^T L dg/dx.
+    const Eigen::Matrix<double, 6, 1> de_dg =
+        2.0 * pl.map.transpose() * (pl.form * (pl.map * sc.value));
+    const Eigen::Matrix<double, 18, 1> grad = sc.gradient.transpose() * de_dg;
     const auto& p = v[static_cast<size_t>(i)];
-    std::array<V3<Grad>, 6> q;
-    for (int c = 0; c < 6; ++c)
-      for (int r = 0; r < 3; ++r) q[static_cast<size_t>(c)][r] = Grad(x(r, p[c]), 18, 3 * c + r);
-    const Grad e = stencil_energy(*this, i, q);
-    for (int c = 0; c < 6; ++c) f.col(p[c]) -= e.derivatives().segment<3>(3 * c);
+    for (int c = 0; c < 6; ++c) f.col(p[c]) -= grad.segment<3>(3 * c);
   }
 }
 
 Eigen::Matrix<double, 18, 18> ShellTriangles::hessian(int i, const Points& x, bool project) const {
-  const auto& p = v[static_cast<size_t>(i)];
-  std::array<V3<Hess>, 6> q;
-  for (int c = 0; c < 6; ++c)
-    for (int r = 0; r < 3; ++r) {
-      const int k = 3 * c + r;
-      Hess& h = q[static_cast<size_t>(c)][r];
-      h.value() = Grad(x(r, p[c]), 18, k);
-      h.derivatives() = Eigen::Matrix<Grad, 18, 1>::Constant(Grad(0.0));
-      h.derivatives()[k] = Grad(1.0);
-      for (int j = 0; j < 18; ++j) h.derivatives()[j].derivatives().setZero();
-    }
-  const Hess e = stencil_energy(*this, i, q);
-  Eigen::Matrix<double, 18, 18> out;
-  for (int r = 0; r < 18; ++r) out.row(r) = e.derivatives()[r].derivatives().transpose();
+  const Plan pl = plan(i);
+  ShellScalars sc;
+  scalars(i, x, pl, true, sc);
+  // 2 (L dg)^T Q (L dg) + sum_m dE/dg_m Hess g_m.
+  const Eigen::Matrix<double, 3, 18> jh = pl.map * sc.gradient;
+  Eigen::Matrix<double, 18, 18> out = 2.0 * jh.transpose() * pl.form * jh;
+  const Eigen::Matrix<double, 6, 1> de_dg =
+      2.0 * pl.map.transpose() * (pl.form * (pl.map * sc.value));
+  for (int m = 0; m < 6; ++m) {
+    if (pl.free[static_cast<size_t>(m % 3)] || de_dg[m] == 0.0) continue;
+    for (int r = 0; r < 12; ++r)
+      for (int c = 0; c < 12; ++c)
+        out(stencil_dof(m, r), stencil_dof(m, c)) +=
+            de_dg[m] * sc.hessian[static_cast<size_t>(m)](r, c);
+  }
   const Eigen::Matrix<double, 18, 18> sym = 0.5 * (out + out.transpose());
   return project ? project_psd(sym) : sym;
 }

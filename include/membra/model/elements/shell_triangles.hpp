@@ -34,6 +34,8 @@ struct PlateLayer {
   double d = 0.0, nu = 0.0;
 };
 
+struct ShellScalars;  // shell_triangles.cpp: a triangle's six scalars and their derivatives
+
 struct ShellTriangles {
   static constexpr int kArity = 6;
   static constexpr std::string_view kName = "shell_triangles";
@@ -83,6 +85,19 @@ struct ShellTriangles {
   // than kSofter of this triangle's plate (a resin triangle next to latex).
   static constexpr double kSofter = 0.5;
   std::array<bool, 3> free_edges(int i) const;
+
+  // How triangle i reads its curvature H = (H11, H12, H22) (edge coordinates) from its six
+  // geometric scalars g (far corners' heights, mid-edge readings): H = map g, and its energy
+  // H^T form H (shell_triangles.cpp).
+  struct Plan {
+    std::array<bool, 3> free{};
+    Eigen::Matrix<double, 3, 6> map;
+    Eigen::Matrix3d form;
+  };
+  Plan plan(int i) const;
+
+ private:
+  void scalars(int i, const Points& x, const Plan& pl, bool second, ShellScalars& out) const;
 };
 
 }  // namespace membra
