@@ -82,11 +82,11 @@ TEST(ShellTriangles, CylindersSpheresAndSaddlesStoreKirchhoffsPlateEnergy) {
 // circle, so the fit cannot tell the circle's quadratic from a flat sheet and the mid-edge
 // normals fill that part in (kPrior). The plate's energies hold there too, within 3 %.
 TEST(ShellTriangles, OnRightTrianglesTheDegenerateFitFallsBackToMidEdgeNormals) {
-  const int n = 24;
+  constexpr int n = 24;
   const double h = 0.002;
   TriPatch m;
   m.x = Points::Zero(3, (n + 1) * (n + 1));
-  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  auto id = [](int i, int j) { return j * (n + 1) + i; };
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) m.x.col(id(i, j)) = Vec3(i * h, j * h, 0.0);
   for (int j = 0; j < n; ++j)

@@ -72,6 +72,16 @@ Eigen::Matrix2d triangle_metric(const Vec3& x0, const Vec3& x1, const Vec3& x2) 
   return ds.transpose() * ds;
 }
 
+Eigen::Matrix2d released_metric(const Eigen::Matrix2d& natural, const Eigen::Matrix2d& frame,
+                                const ReleaseLevel& release) {
+  return release.releasing ? Eigen::Matrix2d(natural + release.level * (frame - natural)) : natural;
+}
+
+bool pattern_covers(const Impregnation& at, int a, int b, int c) {
+  const Vec3 centroid = (at.x.col(a) + at.x.col(b) + at.x.col(c)) / 3.0;
+  return at.pattern.contains(centroid.head<2>());
+}
+
 void MembraneTriangles::add(const std::array<int, 3>& ids, const Vec3& p0, const Vec3& p1,
                             const Vec3& p2, const LawConstants& law, double t) {
   if (!(t > 0.0)) throw std::invalid_argument("membrane triangle: thickness must be positive");
@@ -160,11 +170,8 @@ ElementStress MembraneTriangles::stress(int i, const Points& x, double) const {
 void MembraneTriangles::update(const ReleaseLevel& release) {
   for (int i = 0; i < size(); ++i) {
     const auto k = static_cast<size_t>(i);
-    const Eigen::Matrix2d g =
-        release.releasing ? Eigen::Matrix2d(natural_metric[k] +
-                                            release.level * (frame_metric[k] - natural_metric[k]))
-                          : natural_metric[k];
-    latex[k] = layer_at(g, latex[k].volume, latex[k].law);
+    latex[k] = layer_at(released_metric(natural_metric[k], frame_metric[k], release),
+                        latex[k].volume, latex[k].law);
   }
 }
 
@@ -180,8 +187,7 @@ int MembraneTriangles::impregnate(const Impregnation& at) {
   int count = 0;
   for (int i = 0; i < size(); ++i) {
     const auto& p = v[static_cast<size_t>(i)];
-    const Vec3 c = (at.x.col(p[0]) + at.x.col(p[1]) + at.x.col(p[2])) / 3.0;
-    if (!at.pattern.contains(c.head<2>())) continue;
+    if (!pattern_covers(at, p[0], p[1], p[2])) continue;
     const Eigen::Matrix2d g = triangle_metric(at.x.col(p[0]), at.x.col(p[1]), at.x.col(p[2]));
     const double area = 0.5 * std::sqrt(std::max(0.0, g.determinant()));
     resin[static_cast<size_t>(i)] = layer_at(g, area * at.resin.thickness, law);

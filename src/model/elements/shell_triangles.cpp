@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 
+#include "membra/model/elements/membrane_triangles.hpp"
 #include "membra/model/material.hpp"
 #include "membra/model/pattern.hpp"
 #include "membra/model/psd_projection.hpp"
@@ -128,10 +129,7 @@ PlateLayer plate_at(const Eigen::Matrix2d& metric, double d, double nu) {
 }
 
 Eigen::Matrix2d metric_of(const Points& x, const std::array<int, 6>& p) {
-  Eigen::Matrix<double, 3, 2> ds;
-  ds.col(0) = x.col(p[1]) - x.col(p[0]);
-  ds.col(1) = x.col(p[2]) - x.col(p[0]);
-  return ds.transpose() * ds;
+  return triangle_metric(x.col(p[0]), x.col(p[1]), x.col(p[2]));
 }
 
 }  // namespace
@@ -317,12 +315,9 @@ void ShellTriangles::add_stiffness_estimate(const Points& x, std::vector<double>
 void ShellTriangles::update(const ReleaseLevel& release) {
   for (int i = 0; i < size(); ++i) {
     const auto k = static_cast<size_t>(i);
-    const Eigen::Matrix2d g =
-        release.releasing ? Eigen::Matrix2d(natural_metric[k] +
-                                            release.level * (frame_metric[k] - natural_metric[k]))
-                          : natural_metric[k];
     const PlateLayer old = latex[k];
-    latex[k] = plate_at(g, old.d, old.nu);
+    latex[k] =
+        plate_at(released_metric(natural_metric[k], frame_metric[k], release), old.d, old.nu);
     latex[k].area = old.area;  // the material's area: its plate does not grow with the metric
   }
 }
@@ -337,8 +332,7 @@ int ShellTriangles::impregnate(const Impregnation& at) {
   for (int i = 0; i < size(); ++i) {
     const auto k = static_cast<size_t>(i);
     const auto& p = v[k];
-    const Vec3 c = (at.x.col(p[0]) + at.x.col(p[1]) + at.x.col(p[2])) / 3.0;
-    if (resin[k].area > 0.0 || !at.pattern.contains(c.head<2>())) continue;
+    if (resin[k].area > 0.0 || !pattern_covers(at, p[0], p[1], p[2])) continue;
     resin[k] = plate_at(metric_of(at.x, p), d, 1.0 / 3.0);
     ++count;
   }

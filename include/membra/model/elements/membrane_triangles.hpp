@@ -77,4 +77,13 @@ struct MembraneTriangles {
 // The metric Ds^T Ds of triangle (x0, x1, x2) in its edge basis (m^2).
 Eigen::Matrix2d triangle_metric(const Vec3& x0, const Vec3& x1, const Vec3& x2);
 
+// The latex's rest metric along the release: the frame's at level 1, the natural one at 0 (the
+// natural one before the release begins), as the springs' rest lengths move.
+Eigen::Matrix2d released_metric(const Eigen::Matrix2d& natural, const Eigen::Matrix2d& frame,
+                                const ReleaseLevel& release);
+
+// Does the impregnation's pattern cover the triangle of particles a, b, c (its centroid, at the
+// positions it was impregnated in)? With meshes that follow the pattern, a triangle is in or out.
+bool pattern_covers(const Impregnation& at, int a, int b, int c);
+
 }  // namespace membra
