@@ -1,7 +1,7 @@
 #pragma once
 // The continuum sheet (docs/model.md, "The continuum shell"): a triangle mesh of the natural
 // sheet whose edges follow the outline and every resin boundary, with membrane triangles of the
-// latex's law and shell hinges on its interior edges.
+// latex's law and shell triangles for its bending.
 #include <string>
 #include <vector>
 

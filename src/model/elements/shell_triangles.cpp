@@ -56,6 +56,8 @@ T geometric(int m, const std::array<V3<T>, 4>& p) {
   const auto k = static_cast<size_t>(m - 3);
   const V3<T>&a = p[(k + 1) % 3], &b = p[(k + 2) % 3];
   const V3<T> mk = n + (a - b).cross(p[3] - b).normalized();
+  // A neighbour folded flat onto the face has no mean normal: no reading (its weight is small).
+  if (mk.squaredNorm() < T(1e-12)) return T(0.0);
   return (a + b - p[k] * T(2.0)).dot(mk) / mk.norm();
 }
 
@@ -77,9 +79,12 @@ int stencil_dof(int m, int c) {
 // share it. (Minimizing the energy over the free height instead also relaxes curvature along the
 // edge: a strip then buckled 9 % below Euler's load.) The rows are solved by least squares with
 // a weak pull (kPrior) towards the mid-edge estimate H11 = -(s0 + s1), H12 = -s0,
-// H22 = -(s0 + s2) (exact on symmetric neighbours only): where the far corners lie on the
-// triangle's circumcircle, as across every right triangle's hypotenuse, the fit cannot see the
-// circle's quadratic, and the mid-edge normals fill it in.
+// H22 = -(s0 + s2) (exact on symmetric neighbours only), which fills in what the fit cannot see.
+// The fit is singular where all six points lie on one conic, e.g. at an interior corner of three
+// triangles, whose two neighbours share their far corner (two equal rows); the pull bounds the gain
+// from heights to curvature (at most 1/(2 sqrt kPrior), about 16) and moves a well-posed fit by
+// about kPrior / sigma_min^2 of its gap to the mid-edge estimate (0.4 % on the best-conditioned
+// stencils). A free edge's mid-edge reading is left out (the estimate then takes s_k = 0).
 ShellTriangles::Plan ShellTriangles::plan(int i) const {
   const auto k0 = static_cast<size_t>(i);
   Plan out;
@@ -332,7 +337,8 @@ int ShellTriangles::impregnate(const Impregnation& at) {
   for (int i = 0; i < size(); ++i) {
     const auto k = static_cast<size_t>(i);
     const auto& p = v[k];
-    if (resin[k].area > 0.0 || !pattern_covers(at, p[0], p[1], p[2])) continue;
+    if (!pattern_covers(at, p[0], p[1], p[2]))
+      continue;  // a later coat replaces, as the membrane's
     resin[k] = plate_at(metric_of(at.x, p), d, 1.0 / 3.0);
     ++count;
   }

@@ -5,7 +5,8 @@
 // opposite corner k, the neighbour's far corner o_k: the six particles of its stencil. The
 // heights of the far corners over the face's plane fix the quadratic through the corners
 // (height 0) and them, whose Hessian in the edge coordinates is the second fundamental form II
-// (exact for any quadratic surface, on any mesh).
+// (exact for a quadratic surface wherever the fit is well posed, up to a weak pull towards the
+// mid-edge normals' estimate that keeps a degenerate fit bounded).
 // Each layer stores
 //   A (D/2) [nu tr(M)^2 + (1 - nu) tr(M^2)],   M = G^-1 II,
 // G and A its rest metric and area, D and nu its plate: Kirchhoff's energy density
@@ -74,7 +75,7 @@ struct ShellTriangles {
   void update(const ReleaseLevel& release);
   void begin_release(const Points& x);
   // Resin rule: a triangle whose centroid lies inside the pattern takes the resin's plate (its
-  // material's D, nu 1/3) at rest in its current shape, once.
+  // material's D, nu 1/3) with the metric of its current shape (a later coat replaces it).
   int impregnate(const Impregnation& at);
   bool severed(int i, const CrossesCut& crosses) const;
   void carry(const ShellTriangles& old, const Rebuild& r);
