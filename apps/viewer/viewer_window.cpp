@@ -224,6 +224,12 @@ void ViewerWindow::Impl::draw_springs_and_particles(const Membrane& m, const Vie
         ends.push_back(x.col(sp.a[i]));
         ends.push_back(x.col(sp.b[i]));
       }
+    const AddedSprings& added = m.sheet.model.added_springs;
+    if (f == static_cast<size_t>(SpringFamily::added))
+      for (int i = 0; i < added.size(); ++i) {
+        ends.push_back(x.col(added.a[i]));
+        ends.push_back(x.col(added.b[i]));
+      }
     painter->lines(ends, kFamilyColors[f], vp);
   }
   std::vector<Vec3> pinned, all;

@@ -4,28 +4,28 @@
 
 namespace membra {
 
-SpringStress spring_stress(const Model& model, const Points& x, double thickness) {
-  const Springs& sp = model.springs;
-  SpringStress r;
-  const size_t n = static_cast<size_t>(sp.size());
-  r.strain.resize(n);
-  r.force.resize(n);
-  r.stress.assign(n, 0.0);
-  bool first = true;
-  for (int i = 0; i < sp.size(); ++i) {
-    const double l = (x.col(sp.b[i]) - x.col(sp.a[i])).norm(), l0 = sp.rest_length[i];
-    r.strain[i] = l0 > 0.0 ? (l - l0) / l0 : 0.0;
-    r.force[i] = sp.stiffness[i] * (l - l0);
-    r.min_strain = i == 0 ? r.strain[i] : std::min(r.min_strain, r.strain[i]);
-    r.max_strain = i == 0 ? r.strain[i] : std::max(r.max_strain, r.strain[i]);
-    r.min_force = i == 0 ? r.force[i] : std::min(r.min_force, r.force[i]);
-    r.max_force = i == 0 ? r.force[i] : std::max(r.max_force, r.force[i]);
-    if (!(sp.width[i] > 0.0) || !(thickness > 0.0)) continue;
-    r.stress[i] = r.force[i] / (sp.width[i] * thickness);
-    r.min_stress = first ? r.stress[i] : std::min(r.min_stress, r.stress[i]);
-    r.max_stress = first ? r.stress[i] : std::max(r.max_stress, r.stress[i]);
-    first = false;
-  }
+namespace {
+
+// Widens [lo, hi] to v; the first value sets both.
+void widen(bool& first, double& lo, double& hi, double v) {
+  lo = first ? v : std::min(lo, v);
+  hi = first ? v : std::max(hi, v);
+  first = false;
+}
+
+}  // namespace
+
+StressRanges stress_ranges(const Model& model, const Points& x, double thickness) {
+  StressRanges r;
+  bool first_stress = true, first_strain = true, first_force = true;
+  model.for_each_set([&](const auto& set) {
+    for (int i = 0; i < set.size(); ++i) {
+      const ElementStress e = set.stress(i, x, thickness);
+      if (e.strained) widen(first_strain, r.min_strain, r.max_strain, e.strain);
+      if (e.axial) widen(first_force, r.min_force, r.max_force, e.force);
+      if (e.carries) widen(first_stress, r.min_stress, r.max_stress, e.stress);
+    }
+  });
   return r;
 }
 

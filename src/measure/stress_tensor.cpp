@@ -26,16 +26,20 @@ NodeStress node_stress(const GridSheet& g, const Model& model, const Points& x, 
       const double a = c.norm();
       for (int p : {p00, p10, p01, p11}) area[p] += 0.25 * a, out.normal.col(p) += c;
     }
-  const Springs& sp = model.springs;
-  for (int s = 0; s < sp.size(); ++s) {
-    const Vec3 d = x.col(sp.b[s]) - x.col(sp.a[s]);
-    const double l = d.norm();
-    if (!(l > 0.0)) continue;
-    const double f = sp.stiffness[s] * (l - sp.rest_length[s]);
-    const Eigen::Matrix3d half = 0.5 * f / l * d * d.transpose();  // 1/2 f l n n^T
-    sigma[sp.a[s]] += half;
-    sigma[sp.b[s]] += half;
-  }
+  // Every axial element's force (the springs'; element_set.hpp's read-out).
+  model.for_each_set([&](const auto& set) {
+    for (int s = 0; s < set.size(); ++s) {
+      const ElementStress e = set.stress(s, x, thickness);
+      if (!e.axial) continue;
+      const auto p = set.ids(s);
+      const Vec3 d = x.col(p[1]) - x.col(p[0]);
+      const double l = d.norm();
+      if (!(l > 0.0)) continue;
+      const Eigen::Matrix3d half = 0.5 * e.force / l * d * d.transpose();  // 1/2 f l n n^T
+      sigma[p[0]] += half;
+      sigma[p[1]] += half;
+    }
+  });
   for (int p = 0; p < n; ++p) {
     sigma[p] =
         area[p] > 0.0 ? Eigen::Matrix3d(sigma[p] / (area[p] * thickness)) : Eigen::Matrix3d::Zero();

@@ -109,11 +109,13 @@ ConformalFactor conformal_factor(const Sheet& sheet, const std::vector<double>& 
   return out;
 }
 
-std::vector<double> conformal_growth(const Model& model, const std::vector<double>& u) {
-  const Springs& sp = model.springs;
-  std::vector<double> ratio(static_cast<size_t>(sp.size()));
-  for (int s = 0; s < sp.size(); ++s) ratio[s] = std::exp(0.5 * (u[sp.a[s]] + u[sp.b[s]]));
-  return ratio;
+LocalGrowth ConformalGrowth::at(std::span<const int> ids, std::span<const Vec2>,
+                                std::string_view) const {
+  double sum = 0.0;
+  for (int p : ids) sum += u_[static_cast<size_t>(p)];
+  LocalGrowth g;
+  g.factor = std::exp(ids.size() == 2 ? 0.5 * sum : sum / static_cast<double>(ids.size()));
+  return g;
 }
 
 CurvatureMatch match_curvature(const Sheet& sheet, const std::vector<double>& target,

@@ -58,7 +58,7 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
   j["out_of_time"] = r.out_of_time;
   j["simulated_seconds"] = r.prepared.membrane.state.time;
   j["particles"] = m.num_particles();
-  j["springs"] = m.springs.size();
+  j["springs"] = m.springs.size() + m.added_springs.size();
   j["triangles"] = r.prepared.membrane.sheet.triangles.size();
   j["pinned"] = r.prepared.pinned;
   report_model(scene, r.prepared.membrane.sheet, j);

@@ -48,9 +48,13 @@ void check_continuum_protocol(const Scene& scene) {
   for (const ProtocolStep& step : scene.protocol) {
     const auto kind = step.kind();
     const auto* imp = step.as<ImpregnateStep>();
-    if (kind == ProtocolStep::Kind::grow || kind == ProtocolStep::Kind::add_springs ||
-        kind == ProtocolStep::Kind::cut || kind == ProtocolStep::Kind::curvature_map ||
-        (imp && imp->bilayer))
+    const auto* grow = step.as<GrowStep>();
+    if (grow && grow->grow.family)
+      throw InputError(step.pointer + "/family",
+                       "a spring family is the lattice's; the continuum sheet grows as a whole "
+                       "(leave \"family\" out, or set \"model\": \"lattice\")");
+    if (kind == ProtocolStep::Kind::add_springs || kind == ProtocolStep::Kind::cut ||
+        kind == ProtocolStep::Kind::curvature_map || (imp && imp->bilayer))
       throw InputError(step.pointer, std::string("the continuum model does not take ") +
                                          (imp ? "bilayer coats" : step_name(kind)) +
                                          " steps yet; set \"model\": \"lattice\"");

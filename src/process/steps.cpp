@@ -4,7 +4,6 @@
 #include <type_traits>
 
 #include "membra/core/input_error.hpp"
-#include "membra/model/added_springs.hpp"
 #include "membra/model/curvature_map.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/grow.hpp"
@@ -12,13 +11,13 @@
 namespace membra {
 namespace {
 
-// A path that applies `ratios` of growth gradually: at t, the share t of it in all.
-Path growth_path(Membrane& m, std::vector<double> ratios, int increments) {
+// A path that applies a growth gradually: at t, the share t of it in all.
+Path growth_path(Membrane& m, GrowthPlan plan, int increments) {
   // The share applied so far lives in the path, so that a copy of the path (the viewer's undo)
   // carries its own.
   return {Path::Kind::gradual, increments,
-          [&m, ratios = std::move(ratios), applied = 0.0](double t) mutable {
-            apply_growth(m, ratios, t - applied);
+          [&m, plan = std::move(plan), applied = 0.0](double t) mutable {
+            apply_growth(m, plan, t - applied);
             applied = t;
           }};
 }
@@ -68,14 +67,14 @@ Path apply_release(Membrane& m, const ReleaseStep& step, StepEffects&) {
 }
 
 Path apply_grow(Membrane& m, const GrowStep& step, const std::string& pointer, StepEffects&) {
-  std::vector<double> ratios;
+  GrowthPlan plan;
   try {
-    ratios = growth_ratios(m, step.grow);
+    plan = plan_growth(m.sheet.model, PatternGrowth(step.grow));
   } catch (const std::invalid_argument& e) {
     throw InputError(pointer + "/factor", e.what());
   }
   perturb_path(m, step.path);
-  return growth_path(m, std::move(ratios), step.path.increments);
+  return growth_path(m, std::move(plan), step.path.increments);
 }
 
 Path apply_curvature_map(Membrane& m, const CurvatureMapStep& step, const std::string& pointer,
@@ -90,29 +89,26 @@ Path apply_curvature_map(Membrane& m, const CurvatureMapStep& step, const std::s
   cm.reached = cf.reached;
   cm.message = cf.message;
   out.curvature_map = cm;
-  std::vector<double> ratios = conformal_growth(model, cf.u);
+  GrowthPlan plan = plan_growth(model, ConformalGrowth(cf.u));
   perturb_path(m, step.path);
-  return growth_path(m, std::move(ratios), step.path.increments);
+  return growth_path(m, std::move(plan), step.path.increments);
 }
 
 Path apply_add_springs(Membrane& m, const AddSpringsStep& step, const std::string& pointer,
                        StepEffects& out) {
   AddSpringsSpec spec = step.add;
   if (spec.stiffness <= 0.0) spec.stiffness = m.sheet.stiffness.stretch;
-  const int first = m.sheet.model.springs.size();
-  out.report.springs_added = add_springs(m, spec);
+  Model& model = m.sheet.model;
+  const int first = model.added_springs.size();
+  out.report.springs_added = model.added_springs.add_beside(model.springs, m.state.x, spec);
   if (out.report.springs_added == 0)
     throw InputError(pointer + "/pattern",
                      "the region covers no spring of the sheet (is it between grid nodes, or "
                      "outside the sheet?)");
-  std::vector<double> start;
-  const Springs& sp = m.sheet.model.springs;
-  for (int k = first; k < sp.size(); ++k)
-    start.push_back((m.state.x.col(sp.b[k]) - m.state.x.col(sp.a[k])).norm());
   perturb_path(m, step.path);
   return {Path::Kind::gradual, step.path.increments,
-          [&m, first, start = std::move(start), factor = spec.rest_factor](double t) {
-            set_added_springs_level(m, first, start, factor, t);
+          [&m, first, factor = spec.rest_factor](double t) {
+            m.sheet.model.added_springs.set_level(first, factor, t);
           }};
 }
 

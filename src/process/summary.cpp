@@ -29,7 +29,7 @@ void summarize_form(RunResult& r) {
   r.form = classify_form(r.curvature);
   r.curvature_global = global_curvature(s.x, m.reference, mem.sheet.triangles);
   if (!r.curvature_global.interior.empty()) r.form_global = classify_form(r.curvature_global);
-  r.stress = spring_stress(m, s.x, mem.sheet.material.thickness);
+  r.stress = stress_ranges(m, s.x, mem.sheet.material.thickness);
   r.vertex_stress = vertex_stress(m, s.x, mem.sheet.material.thickness);
   // A small residual does not tell a minimum from a soft saddle.
   r.stability = check_stability(m, s.x, mem.sheet.stiffness.stretch);

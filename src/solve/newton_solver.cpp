@@ -73,9 +73,7 @@ class Newton {
         projected_(ws.projected),
         llt_(ws.llt),
         analysed_(ws.analysed) {
-    double sum = 0.0;
-    for (double l : model.springs.rest_length) sum += l;
-    length_ = model.springs.size() > 0 ? sum / model.springs.size() : 1.0;
+    length_ = mean_rest_length(model);
   }
 
   void run(const Stopwatch& clock);

@@ -137,6 +137,7 @@ std::string ViewerSession::set_parameters(const LiveParameters& p) {
     // Every latex spring keeps its ratio to K (shear K/2, flex, added); the resin does not change.
     const double ratio = p.K / params_.K;
     for (double& k : model.springs.latex_stiffness) k *= ratio;
+    for (double& k : model.added_springs.stiffness) k *= ratio;
     m.sheet.stiffness.stretch *= ratio;
     m.sheet.stiffness.shear *= ratio;
     m.sheet.stiffness.flex *= ratio;

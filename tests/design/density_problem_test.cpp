@@ -292,15 +292,17 @@ TEST(PieceMap, CoversEachElementAsImpregnationDoesAndDifferentiatesIt) {
         c, [&](const Eigen::VectorXd& u) { return pp.map->element_coverage(0, s, u).fraction; });
   }
   const Bending& b = model.bending;
+  const int bending_set = 2;  // Model::for_each_set's order: springs, added springs, bending
   for (int e = 0; e < b.size(); ++e) {
-    const PieceMap::Coverage c = pp.map->element_coverage(1, e, t);
+    const PieceMap::Coverage c = pp.map->element_coverage(bending_set, e, t);
     const auto& v = b.v[e];
     const double sampled = 0.5 * (fraction_inside(*stencil.pattern, at(v[0]), at(v[1]), 8) +
                                   fraction_inside(*stencil.pattern, at(v[1]), at(v[2]), 8));
     EXPECT_NEAR(c.fraction, sampled, 1.0 / 8 + 1e-9) << e;
     if (c.fraction > 0.0 && c.fraction < 1.0 && e % 4 == 0)
-      check_rates(
-          c, [&](const Eigen::VectorXd& u) { return pp.map->element_coverage(1, e, u).fraction; });
+      check_rates(c, [&](const Eigen::VectorXd& u) {
+        return pp.map->element_coverage(bending_set, e, u).fraction;
+      });
   }
   EXPECT_GT(inside, 0);
   EXPECT_GT(outside, 0);

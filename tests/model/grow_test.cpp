@@ -1,8 +1,10 @@
-// Intrinsic deformation: growth ratios along directions, and the released form of a grown sheet.
+// Intrinsic deformation: growth ratios along directions, and the released form of a grown sheet,
+// on the lattice and on the continuum sheet.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "membra/model/continuum_sheet.hpp"
 #include "membra/model/grow.hpp"
 #include "membra/solve/static_solver.hpp"
 
@@ -11,6 +13,18 @@ namespace {
 
 Membrane sheet(int n, double size = 0.05) {
   return make_membrane(build_sheet({size, size, n, n}, SheetOptions{}));
+}
+
+// Each spring's length ratio under the growth (the springs are the model's first set).
+std::vector<double> growth_ratios(const Membrane& m, const GrowSpec& g) {
+  const GrowthPlan plan = plan_growth(m.sheet.model, PatternGrowth(g));
+  const Springs& sp = m.sheet.model.springs;
+  const Points& r = m.sheet.model.reference;
+  std::vector<double> ratio;
+  for (int s = 0; s < sp.size(); ++s)
+    ratio.push_back(plan.per_set[0][static_cast<size_t>(s)].ratio(r.col(sp.b[s]).head<2>() -
+                                                                  r.col(sp.a[s]).head<2>()));
+  return ratio;
 }
 
 int spring_between(const Membrane& m, int pi, int pj, int qi, int qj) {
@@ -70,12 +84,12 @@ TEST(Grow, UniformFactorScalesTheReleasedSheet) {
   GrowSpec g;
   const double s = 1.25;
   g.factor = [s](const Vec2&) { return s; };
-  const auto ratios = growth_ratios(m, g);
+  const GrowthPlan plan = plan_growth(m.sheet.model, PatternGrowth(g));
   StaticOptions o;
   o.force_scale = m.sheet.stiffness.stretch * m.sheet.grid.hx();
   o.tolerance = 1e-12;
   for (int k = 1; k <= 4; ++k) {
-    apply_growth(m, ratios, 0.25);
+    apply_growth(m, plan, 0.25);
     ASSERT_TRUE(solve_static(m.sheet.model, m.state, o).converged);
   }
   const Vec3 c0 = x0.rowwise().mean(), c = m.state.x.rowwise().mean();
@@ -83,6 +97,57 @@ TEST(Grow, UniformFactorScalesTheReleasedSheet) {
   for (int p = 0; p < m.sheet.model.num_particles(); ++p)
     worst = std::max(worst, (m.state.x.col(p) - c - s * (x0.col(p) - c0)).norm());
   EXPECT_LT(worst, 1e-6 * 0.05);
+}
+
+Membrane continuum_sheet() {
+  ContinuumSpec s;
+  s.width = s.height = 0.04;
+  s.mesh.max_edge = 0.006;
+  return make_membrane(build_continuum_sheet(s));
+}
+
+TEST(Grow, TrianglesTakeTheGrownPapersMetric) {
+  // After the whole growth, each triangle's natural metric is that of its paper corners moved by
+  // the growth's stretch (along x by 1.3 here), and its area (the latex's volume) grew with it.
+  Membrane m = continuum_sheet();
+  const MembraneTriangles before = m.sheet.model.membrane_triangles;
+  GrowSpec g;
+  g.factor = [](const Vec2&) { return 1.3; };
+  g.direction = GrowDirection::x;
+  const GrowthPlan plan = plan_growth(m.sheet.model, PatternGrowth(g));
+  for (int k = 0; k < 4; ++k) apply_growth(m, plan, 0.25);
+  const MembraneTriangles& t = m.sheet.model.membrane_triangles;
+  const Points& r = m.sheet.model.reference;
+  const Eigen::Matrix3d a = Eigen::Vector3d(1.3, 1.0, 1.0).asDiagonal();
+  ASSERT_GT(t.size(), 20);
+  for (int i = 0; i < t.size(); ++i) {
+    const auto p = t.ids(i);
+    const Eigen::Matrix2d want = triangle_metric(a * r.col(p[0]), a * r.col(p[1]), a * r.col(p[2]));
+    EXPECT_LT((t.natural_metric[i] - want).norm(), 1e-12 * want.norm()) << i;
+    EXPECT_NEAR(t.latex[i].volume, 1.3 * before.latex[i].volume, 1e-12 * before.latex[i].volume);
+  }
+}
+
+TEST(Grow, UniformFactorScalesTheReleasedContinuumSheet) {
+  // As the lattice's: a uniform growth by s has the sheet scaled by s as its stress-free shape.
+  Membrane m = continuum_sheet();
+  const Points x0 = m.state.x;
+  GrowSpec g;
+  const double s = 1.25;
+  g.factor = [s](const Vec2&) { return s; };
+  const GrowthPlan plan = plan_growth(m.sheet.model, PatternGrowth(g));
+  StaticOptions o;
+  o.force_scale = m.sheet.material.youngs_modulus * m.sheet.material.thickness * 0.006;
+  o.tolerance = 1e-12;
+  for (int k = 1; k <= 4; ++k) {
+    apply_growth(m, plan, 0.25);
+    ASSERT_TRUE(solve_static(m.sheet.model, m.state, o).converged);
+  }
+  const Vec3 c0 = x0.rowwise().mean(), c = m.state.x.rowwise().mean();
+  double worst = 0.0;
+  for (int p = 0; p < m.sheet.model.num_particles(); ++p)
+    worst = std::max(worst, (m.state.x.col(p) - c - s * (x0.col(p) - c0)).norm());
+  EXPECT_LT(worst, 1e-6 * 0.04);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "membra/model/elements/set_context.hpp"
 #include "membra/model/sheet.hpp"
 
 namespace membra {
@@ -36,8 +37,17 @@ std::vector<bool> edge_particles(const GridSheet& grid);
 ConformalFactor conformal_factor(const Sheet& sheet, const std::vector<double>& K,
                                  const ConformalOptions& options = {});
 
-// Length ratio of every spring for the factor: e^{(u_a + u_b)/2}.
-std::vector<double> conformal_growth(const Model& model, const std::vector<double>& u);
+// The growth that carries the factor: isotropic, e^u averaged over the element's particles in
+// the exponent (a spring grows by e^{(u_a + u_b)/2}).
+class ConformalGrowth final : public GrowthField {
+ public:
+  explicit ConformalGrowth(std::vector<double> u) : u_(std::move(u)) {}
+  LocalGrowth at(std::span<const int> ids, std::span<const Vec2> paper,
+                 std::string_view group) const override;
+
+ private:
+  std::vector<double> u_;  // per particle
+};
 
 // How well a measured curvature (1/m^2, per particle) matches the target over the interior: the
 // particles at least `margin` (m, paper distance) from the edge.

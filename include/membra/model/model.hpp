@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "membra/core/vec.hpp"
+#include "membra/model/elements/added_springs.hpp"
 #include "membra/model/elements/bending.hpp"
 #include "membra/model/elements/hinges.hpp"
 #include "membra/model/elements/membrane_triangles.hpp"
@@ -17,8 +18,9 @@ struct Model {
   std::vector<double> mass;      // kg, lumped
   std::vector<double> inv_mass;  // 1/kg; 0 means pinned
   Springs springs;
-  Bending bending;  // plate bending; empty when the sheet has none
-  Hinges hinges;    // bilayer moments; empty unless resin was applied as a bilayer
+  AddedSprings added_springs;  // add_springs' springs; empty unless the protocol adds some
+  Bending bending;             // plate bending; empty when the sheet has none
+  Hinges hinges;               // bilayer moments; empty unless resin was applied as a bilayer
   MembraneTriangles membrane_triangles;  // the continuum sheet; empty on a lattice
   ShellTriangles shell_triangles;        // its bending; empty on a lattice
   Points reference;               // paper position of each particle in the flat natural sheet, m
@@ -31,6 +33,7 @@ struct Model {
   template <typename F>
   void for_each_set(F&& f) const {
     f(springs);
+    f(added_springs);
     f(bending);
     f(hinges);
     f(membrane_triangles);
@@ -39,6 +42,7 @@ struct Model {
   template <typename F>
   void for_each_set(F&& f) {
     f(springs);
+    f(added_springs);
     f(bending);
     f(hinges);
     f(membrane_triangles);
@@ -49,6 +53,7 @@ struct Model {
   template <typename F>
   void for_each_set_with(const Model& other, F&& f) {
     f(springs, other.springs);
+    f(added_springs, other.added_springs);
     f(bending, other.bending);
     f(hinges, other.hinges);
     f(membrane_triangles, other.membrane_triangles);
@@ -64,6 +69,11 @@ struct Model {
   // Appends a free particle of mass m (> 0) at paper position x; returns its index.
   int add_particle(double m, const Vec3& x);
 };
+
+// The model's length scale (m): the mean rest length of the sets that have rest lengths (the
+// springs, lattice and added), else the mean edge of the sets with natural metrics (the
+// continuum's triangles), else 1.
+double mean_rest_length(const Model& model);
 
 struct State {
   Points x;           // positions, m

@@ -10,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "membra/model/added_springs.hpp"
+#include "membra/model/elements/added_springs.hpp"
 #include "membra/model/field_spec.hpp"
 #include "membra/model/grow.hpp"
 #include "membra/model/material.hpp"

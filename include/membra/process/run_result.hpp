@@ -69,7 +69,7 @@ struct RunResult {
   // averaged out, so a bowl with a wrinkled rim reads as a bowl.
   GaussianCurvature curvature_global;
   std::string form_global;
-  SpringStress stress;                // per spring, for the sheet's thickness
+  StressRanges stress;                // over the elements, for the sheet's thickness
   std::vector<double> vertex_stress;  // Pa, per particle (measure/stress.hpp), final state
   std::vector<Frame> frames;          // scene.output.frames instants (dynamic solves, release path)
   std::vector<StressFeature> features;              // the cuts and holes, in step order

@@ -77,9 +77,28 @@ Eigen::Matrix2d released_metric(const Eigen::Matrix2d& natural, const Eigen::Mat
   return release.releasing ? Eigen::Matrix2d(natural + release.level * (frame - natural)) : natural;
 }
 
+bool triangle_severed(const CrossesCut& crosses, int a, int b, int c) {
+  return crosses(a, b) || crosses(b, c) || crosses(c, a);
+}
+
 bool pattern_covers(const Impregnation& at, int a, int b, int c) {
   const Vec3 centroid = (at.x.col(a) + at.x.col(b) + at.x.col(c)) / 3.0;
   return at.pattern.contains(centroid.head<2>());
+}
+
+LocalGrowth triangle_growth(const GrowthField& field, const Points& paper, int a, int b, int c) {
+  const std::array<int, 3> id = {a, b, c};
+  const std::array<Vec2, 3> p = {paper.col(a).head<2>(), paper.col(b).head<2>(),
+                                 paper.col(c).head<2>()};
+  return field.at(id, p, "triangle");
+}
+
+Eigen::Matrix2d edge_basis_stretch(const LocalGrowth& g, const Points& paper, int a, int b, int c,
+                                   double exponent) {
+  Eigen::Matrix2d e;
+  e << paper.col(b).head<2>() - paper.col(a).head<2>(),
+      paper.col(c).head<2>() - paper.col(a).head<2>();
+  return e.inverse() * g.stretch(exponent) * e;
 }
 
 void MembraneTriangles::add(const std::array<int, 3>& ids, const Vec3& p0, const Vec3& p1,
@@ -164,7 +183,15 @@ ElementStress MembraneTriangles::stress(int i, const Points& x, double) const {
   plane.col(1) = (ds.col(1) - ds.col(1).dot(plane.col(0)) * plane.col(0)).normalized();
   const Eigen::Matrix2d n2 = plane.transpose() * (0.5 * (n + n.transpose())) * plane;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(n2, Eigen::EigenvaluesOnly);
-  return {true, eig.eigenvalues().maxCoeff() / thickness[static_cast<size_t>(i)]};
+  ElementStress e;
+  e.carries = true;
+  e.stress = eig.eigenvalues().maxCoeff() / thickness[static_cast<size_t>(i)];
+  // The latex's largest principal stretch: the square root of G^-1 g's largest eigenvalue.
+  const Eigen::Matrix2d c = latex[static_cast<size_t>(i)].metric_inverse * (ds.transpose() * ds);
+  const double mean = 0.5 * c.trace(), det = c.determinant();
+  e.strained = true;
+  e.strain = std::sqrt(mean + std::sqrt(std::max(0.0, mean * mean - det))) - 1.0;
+  return e;
 }
 
 void MembraneTriangles::update(const ReleaseLevel& release) {
@@ -196,9 +223,24 @@ int MembraneTriangles::impregnate(const Impregnation& at) {
   return count;
 }
 
-bool MembraneTriangles::severed(int i, const CrossesCut& crosses) const {
-  const auto& p = v[static_cast<size_t>(i)];
-  return crosses(p[0], p[1]) || crosses(p[1], p[2]) || crosses(p[2], p[0]);
+std::vector<LocalGrowth> MembraneTriangles::growth(const GrowthField& field,
+                                                   const Points& paper) const {
+  std::vector<LocalGrowth> g;
+  g.reserve(v.size());
+  for (const auto& p : v) g.push_back(triangle_growth(field, paper, p[0], p[1], p[2]));
+  return g;
+}
+
+void MembraneTriangles::grow(const std::vector<LocalGrowth>& g, const Points& paper,
+                             double exponent, const ReleaseLevel& release) {
+  for (size_t k = 0; k < v.size(); ++k) {
+    if (g[k].none()) continue;
+    const Eigen::Matrix2d s = edge_basis_stretch(g[k], paper, v[k][0], v[k][1], v[k][2], exponent);
+    natural_metric[k] = s.transpose() * natural_metric[k] * s;
+    frame_metric[k] = s.transpose() * frame_metric[k] * s;
+    latex[k].volume *= std::abs(s.determinant());  // the latex grows in area, not in thickness
+  }
+  update(release);
 }
 
 void MembraneTriangles::carry(const MembraneTriangles& old, const Rebuild& r) {

@@ -345,9 +345,24 @@ int ShellTriangles::impregnate(const Impregnation& at) {
   return count;
 }
 
-bool ShellTriangles::severed(int i, const CrossesCut& crosses) const {
-  const auto& p = v[static_cast<size_t>(i)];
-  return crosses(p[0], p[1]) || crosses(p[1], p[2]) || crosses(p[2], p[0]);
+std::vector<LocalGrowth> ShellTriangles::growth(const GrowthField& field,
+                                                const Points& paper) const {
+  std::vector<LocalGrowth> g;
+  g.reserve(v.size());
+  for (const auto& p : v) g.push_back(triangle_growth(field, paper, p[0], p[1], p[2]));
+  return g;
+}
+
+void ShellTriangles::grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
+                          const ReleaseLevel& release) {
+  for (size_t k = 0; k < v.size(); ++k) {
+    if (g[k].none()) continue;
+    const Eigen::Matrix2d s = edge_basis_stretch(g[k], paper, v[k][0], v[k][1], v[k][2], exponent);
+    natural_metric[k] = s.transpose() * natural_metric[k] * s;
+    frame_metric[k] = s.transpose() * frame_metric[k] * s;
+    latex[k].area *= std::abs(s.determinant());
+  }
+  update(release);
 }
 
 void ShellTriangles::carry(const ShellTriangles& old, const Rebuild& r) {

@@ -86,28 +86,20 @@ void Springs::add_forces(const Points& x, const Points* v, int begin, int end, P
 }
 
 Eigen::Matrix<double, 6, 6> Springs::hessian(int i, const Points& x, bool project) const {
-  const Eigen::Matrix3d k =
-      spring_hessian_block(x.col(a[i]), x.col(b[i]), rest_length[i], stiffness[i], project);
-  Eigen::Matrix<double, 6, 6> block;
-  block << k, -k, -k, k;
-  return block;
+  return spring_hessian(x.col(a[i]), x.col(b[i]), rest_length[i], stiffness[i], project);
 }
 
 void Springs::add_stiffness_estimate(const Points& x, std::vector<double>& diag) const {
   for (int i = 0; i < size(); ++i) {
-    const double l = (x.col(b[i]) - x.col(a[i])).norm();
-    // Axial stiffness k plus the geometric (stress) stiffness |k (1 - l0/l)| across the spring.
-    const double k = stiffness[i] * (1.0 + (l > 0.0 ? std::abs(1.0 - rest_length[i] / l) : 1.0));
+    const double k =
+        spring_stiffness_estimate(x.col(a[i]), x.col(b[i]), rest_length[i], stiffness[i]);
     diag[a[i]] += k;
     diag[b[i]] += k;
   }
 }
 
 ElementStress Springs::stress(int i, const Points& x, double thickness) const {
-  if (!(width[i] > 0.0)) return {};
-  if (!(thickness > 0.0)) return {true, 0.0};
-  const double l = (x.col(b[i]) - x.col(a[i])).norm();
-  return {true, stiffness[i] * (l - rest_length[i]) / (width[i] * thickness)};
+  return axial_stress(x.col(a[i]), x.col(b[i]), rest_length[i], stiffness[i], width[i], thickness);
 }
 
 void Springs::begin_release(const Points& x) {
@@ -120,11 +112,6 @@ double Springs::latex_rest(int s, const ReleaseLevel& release) const {
 }
 
 void Springs::update(int s, const ReleaseLevel& release) {
-  if (family[s] == SpringFamily::added) {  // added springs keep what add_springs gave them
-    rest_length[s] = natural_length[s];
-    stiffness[s] = latex_stiffness[s];
-    return;
-  }
   const double rest = latex_rest(s, release);
   const double f = resin_fraction[s], kl = latex_stiffness[s];
   if (f <= 0.0) {
@@ -153,7 +140,6 @@ SpringRate Springs::rate(int s, const ReleaseLevel& release) const {
 
 ResinFootprint Springs::footprint(int s, const Points& x) const {
   ResinFootprint f;
-  if (family[s] == SpringFamily::added) return f;
   f.count = 1;
   f.segment[0] = {x.col(a[s]).head<2>(), x.col(b[s]).head<2>(), 1.0};
   f.site = 0.5 * (x.col(a[s]) + x.col(b[s])).head<2>();
@@ -167,7 +153,6 @@ void Springs::set_resin_fraction(int s, double f, const ReleaseLevel& release) {
 
 double Springs::resin_rate(int s, const Points& x, const Points& w,
                            const ReleaseLevel& release) const {
-  if (family[s] == SpringFamily::added) return 0.0;
   const Vec3 d = x.col(b[s]) - x.col(a[s]);
   const double l = d.norm();
   if (l <= 0.0) return 0.0;
@@ -177,13 +162,35 @@ double Springs::resin_rate(int s, const Points& x, const Points& w,
   return (r.dk * (l - rest_length[s]) - stiffness[s] * r.dl0) * dl;
 }
 
+std::vector<LocalGrowth> Springs::growth(const GrowthField& field, const Points& paper) const {
+  std::vector<LocalGrowth> g(static_cast<size_t>(size()));
+  for (int s = 0; s < size(); ++s) {
+    const std::array<int, 2> id = ids(s);
+    const std::array<Vec2, 2> p = {paper.col(a[s]).head<2>(), paper.col(b[s]).head<2>()};
+    g[static_cast<size_t>(s)] = field.at(id, p, to_string(family[s]));
+  }
+  return g;
+}
+
+void Springs::grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
+                   const ReleaseLevel& release) {
+  for (int s = 0; s < size(); ++s) {
+    const double ratio =
+        g[static_cast<size_t>(s)].ratio(paper.col(b[s]).head<2>() - paper.col(a[s]).head<2>());
+    if (ratio == 1.0) continue;
+    const double k = std::pow(ratio, exponent);
+    natural_length[s] *= k;
+    frame_length[s] *= k;
+    update(s, release);
+  }
+}
+
 int Springs::impregnate(const Impregnation& at) {
   const LatticeStiffness& kl = at.sheet.stiffness;
   const LatticeStiffness kr = homogenize(at.resin, kl.flex > 0.0 ? kl.flex / kl.stretch : 0.0);
   const Points& x = at.x;
   int count = 0;
   for (int s = 0; s < size(); ++s) {
-    if (family[s] == SpringFamily::added) continue;  // not part of the sheet
     const Vec2 pa = x.col(a[s]).head<2>(), pb = x.col(b[s]).head<2>();
     if (fraction_inside(at.pattern, pa, pb) <= 0.0) continue;
     ++count;
@@ -209,8 +216,7 @@ void Springs::carry(const Springs& old, const Rebuild& r) {
     return Key{std::min(na, nb), std::max(na, nb), sp.family[s]};
   };
   std::map<Key, int> old_spring;
-  for (int s = 0; s < old.size(); ++s)
-    if (old.family[s] != SpringFamily::added) old_spring[key(r.old_sheet.grid, old, s)] = s;
+  for (int s = 0; s < old.size(); ++s) old_spring[key(r.old_sheet.grid, old, s)] = s;
   std::vector<bool> keep(static_cast<size_t>(size()), false);
   for (int s = 0; s < size(); ++s) {
     const auto it = old_spring.find(key(r.new_sheet.grid, *this, s));
@@ -224,18 +230,6 @@ void Springs::carry(const Springs& old, const Rebuild& r) {
     resin_stiffness[s] = old.resin_stiffness[o] * latex_stiffness[s] / old.latex_stiffness[o];
   }
   filter(keep);
-  for (int s = 0; s < old.size(); ++s) {
-    if (old.family[s] != SpringFamily::added) continue;
-    const int pa = r.new_of_old[static_cast<size_t>(old.a[s])];
-    const int pb = r.new_of_old[static_cast<size_t>(old.b[s])];
-    if (pa < 0 || pb < 0) continue;
-    add(pa, pb, old.rest_length[s], old.stiffness[s], old.damping[s], SpringFamily::added,
-        old.width[s]);
-    natural_length.back() = old.natural_length[s];
-    latex_stiffness.back() = old.latex_stiffness[s];
-    resin_length.back() = old.resin_length[s];
-    frame_length.back() = old.frame_length[s];
-  }
 }
 
 }  // namespace membra

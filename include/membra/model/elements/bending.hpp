@@ -84,6 +84,10 @@ struct Bending {
   }
   // The old sheet's elements that still exist on the rebuilt one, with their resin; the others go.
   void carry(const Bending& old, const Rebuild& r);
+  // Growth rule: none. The lattice's growth changes lengths (the springs'); the turning angles
+  // keep their rest state, as in the paper's model.
+  std::vector<LocalGrowth> growth(const GrowthField&, const Points&) const { return {}; }
+  void grow(const std::vector<LocalGrowth>&, const Points&, double, const ReleaseLevel&) {}
 };
 
 }  // namespace membra

@@ -27,6 +27,9 @@ struct ReleaseLevel {
   double level = 1.0;
 };
 
+class GrowthField;   // set_context.hpp
+struct LocalGrowth;  // set_context.hpp
+
 // Does the segment between particles p and q cross the cut? (the cut rule's question)
 using CrossesCut = std::function<bool(int p, int q)>;
 
@@ -43,18 +46,25 @@ struct ResinFootprint {
   Vec2 site = Vec2::Zero();
 };
 
-// An element's in-plane stress, for pictures and measures (Pa, tension > 0); `carries` false for
-// an element that has none (bending, hinges) or none known (a spring of unknown width).
+// An element's in-plane read-out, for pictures and the report: its stress (Pa, tension > 0;
+// `carries` false for an element that has none, bending and hinges, or none known, a spring of
+// unknown width), its largest strain against its rest state (`strained`: springs, the latex of
+// membrane triangles) and an axial element's force (`axial`: springs, N).
 struct ElementStress {
   bool carries = false;
   double stress = 0.0;
+  bool strained = false;
+  double strain = 0.0;
+  bool axial = false;
+  double force = 0.0;
 };
 
 template <typename S>
 concept ElementSet = requires(const S& s, S& w, const Points& x, const Points* v, Points& f, int i,
                               bool project, const std::vector<bool>& keep,
                               std::vector<double>& diag, const CrossesCut& crosses,
-                              const ReleaseLevel& release) {
+                              const ReleaseLevel& release, const GrowthField& field,
+                              const std::vector<LocalGrowth>& growth) {
   // The number of particles an element joins, and the kind's name (docs, messages).
   { S::kArity } -> std::convertible_to<int>;
   { S::kName } -> std::convertible_to<std::string_view>;
@@ -85,6 +95,11 @@ concept ElementSet = requires(const S& s, S& w, const Points& x, const Points* v
   // The cut rule: which elements a cut severs; then keep only those where keep[i].
   { s.severed(i, crosses) } -> std::same_as<bool>;
   w.filter(keep);
+  // The growth rule: each element's growth read from the field at the paper positions x (a
+  // kind that does not grow returns none), then that growth raised to an exponent (a share of it
+  // along a path) applied to the latex's rest state.
+  { s.growth(field, x) } -> std::same_as<std::vector<LocalGrowth>>;
+  w.grow(growth, x, 0.5, release);
   // The resin rule (returns how many elements took resin) and the carry-over of a rebuilt
   // sheet's elements (set_context.hpp; declared there, checked where the sets are defined).
 };

@@ -63,6 +63,9 @@ struct Hinges {
   bool severed(int i, const CrossesCut& crosses) const;
   // The old sheet's hinges whose four particles and two triangles survive, with their moments.
   void carry(const Hinges& old, const Rebuild& r);
+  // Growth rule: none; a bilayer's moment is the resin's, which does not grow.
+  std::vector<LocalGrowth> growth(const GrowthField&, const Points&) const { return {}; }
+  void grow(const std::vector<LocalGrowth>&, const Points&, double, const ReleaseLevel&) {}
 };
 
 }  // namespace membra

@@ -20,6 +20,9 @@
 
 namespace membra {
 
+// The cut rule of both triangle sets: a triangle goes when the cut crosses one of its edges.
+bool triangle_severed(const CrossesCut& crosses, int a, int b, int c);
+
 // A triangle's rest state for one layer: its metric inverted, 1 / det of the metric, its volume.
 struct LayerRest {
   Eigen::Matrix2d metric_inverse = Eigen::Matrix2d::Identity();
@@ -65,9 +68,18 @@ struct MembraneTriangles {
   // Resin rule: a triangle whose centroid lies inside the pattern takes a resin layer at rest in
   // its current shape (the resin material's law and E, nu 1/3, and the resin's thickness).
   int impregnate(const Impregnation& at);
-  bool severed(int i, const CrossesCut& crosses) const;
+  bool severed(int i, const CrossesCut& crosses) const {
+    return triangle_severed(crosses, v[static_cast<size_t>(i)][0], v[static_cast<size_t>(i)][1],
+                            v[static_cast<size_t>(i)][2]);
+  }
   // Triangles whose three particles survive a rebuild, with their state.
   void carry(const MembraneTriangles& old, const Rebuild& r);
+  // Growth rule: the growth read at the centroid (blended by the share of the outline inside a
+  // grow region) stretches the latex's natural and frame metrics, G -> P^T G P with P the
+  // stretch in the triangle's edge basis; the resin keeps its metric.
+  std::vector<LocalGrowth> growth(const GrowthField& field, const Points& paper) const;
+  void grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
+            const ReleaseLevel& release);
   // The design's resin maps do not place resin on triangles yet.
   ResinFootprint footprint(int, const Points&) const { return {}; }
   void set_resin_fraction(int, double, const ReleaseLevel&) {}
@@ -81,6 +93,13 @@ Eigen::Matrix2d triangle_metric(const Vec3& x0, const Vec3& x1, const Vec3& x2);
 // natural one before the release begins), as the springs' rest lengths move.
 Eigen::Matrix2d released_metric(const Eigen::Matrix2d& natural, const Eigen::Matrix2d& frame,
                                 const ReleaseLevel& release);
+
+// Both triangle sets' growth rule: the growth of triangle (a, b, c) read from the field at its
+// paper positions, and the stretch P = E^-1 A^e E that a share e of it makes in the triangle's
+// edge basis E (a metric G grows to P^T G P).
+LocalGrowth triangle_growth(const GrowthField& field, const Points& paper, int a, int b, int c);
+Eigen::Matrix2d edge_basis_stretch(const LocalGrowth& g, const Points& paper, int a, int b, int c,
+                                   double exponent);
 
 // Does the impregnation's pattern cover the triangle of particles a, b, c (its centroid, at the
 // positions it was impregnated in)? With meshes that follow the pattern, a triangle is in or out.

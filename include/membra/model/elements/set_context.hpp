@@ -1,9 +1,13 @@
 #pragma once
 // What a protocol step hands every element set: the impregnation (which resin where, in which
-// state) and the rebuild of a sheet without the nodes a hole removed. One struct per question,
-// so each set's resin rule and cut rule read the same inputs (docs/process.md).
+// state), the rebuild of a sheet without the nodes a hole removed, and a growth of the latex. One
+// struct per question, so each set's resin, cut and growth rules read the same inputs
+// (docs/process.md).
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <span>
+#include <string_view>
 #include <vector>
 
 #include "membra/core/vec.hpp"
@@ -44,6 +48,42 @@ struct Rebuild {
     }
     return true;
   }
+};
+
+// The growth of the latex at one element (grow steps, curvature maps): lengths along the paper
+// direction `direction` (a unit vector) scale by `factor` and lengths across it keep theirs, or,
+// when `isotropic`, all lengths scale by it (the natural metric times factor^2).
+struct LocalGrowth {
+  double factor = 1.0;
+  bool isotropic = true;
+  Vec2 direction = Vec2(1.0, 0.0);
+
+  bool none() const { return factor == 1.0; }
+  // How many times longer the paper vector d grows: sqrt((f d.u)^2 + (d x u)^2) / |d|.
+  double ratio(const Vec2& d) const {
+    if (isotropic) return factor;
+    const double along = d.dot(direction), across = d.x() * direction.y() - d.y() * direction.x();
+    return std::hypot(factor * along, across) / d.norm();
+  }
+  // The growth as a paper-plane stretch, raised to `exponent` (a share of it along a path):
+  // f^e I, or I + (f^e - 1) u u^T.
+  Eigen::Matrix2d stretch(double exponent) const {
+    const double fe = std::pow(factor, exponent);
+    if (isotropic) return fe * Eigen::Matrix2d::Identity();
+    return Eigen::Matrix2d::Identity() + (fe - 1.0) * direction * direction.transpose();
+  }
+};
+
+// Where the latex grows, and how: each set asks it for the growth of each of its elements.
+class GrowthField {
+ public:
+  virtual ~GrowthField() = default;
+  // The growth of an element of particles `ids` at paper positions `paper` (m, the natural
+  // sheet's). `group` names the element's family or kind ("stretch", "shear", "flex", "added",
+  // "triangle"), for a growth that one spring family takes alone. Throws std::invalid_argument
+  // where the growth is not a positive finite factor.
+  virtual LocalGrowth at(std::span<const int> ids, std::span<const Vec2> paper,
+                         std::string_view group) const = 0;
 };
 
 }  // namespace membra

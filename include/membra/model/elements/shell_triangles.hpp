@@ -24,6 +24,7 @@
 #include <Eigen/Core>
 
 #include "membra/model/elements/element_set.hpp"
+#include "membra/model/elements/membrane_triangles.hpp"
 #include "membra/model/elements/set_context.hpp"
 
 namespace membra {
@@ -77,8 +78,15 @@ struct ShellTriangles {
   // Resin rule: a triangle whose centroid lies inside the pattern takes the resin's plate (its
   // material's D, nu 1/3) with the metric of its current shape (a later coat replaces it).
   int impregnate(const Impregnation& at);
-  bool severed(int i, const CrossesCut& crosses) const;
+  bool severed(int i, const CrossesCut& crosses) const {
+    return triangle_severed(crosses, v[static_cast<size_t>(i)][0], v[static_cast<size_t>(i)][1],
+                            v[static_cast<size_t>(i)][2]);
+  }
   void carry(const ShellTriangles& old, const Rebuild& r);
+  // Growth rule: the latex's metric grows as the membrane's (triangle_growth); its plate follows.
+  std::vector<LocalGrowth> growth(const GrowthField& field, const Points& paper) const;
+  void grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
+            const ReleaseLevel& release);
   ResinFootprint footprint(int, const Points&) const { return {}; }
   void set_resin_fraction(int, double, const ReleaseLevel&) {}
   double resin_rate(int, const Points&, const Points&, const ReleaseLevel&) const { return 0.0; }

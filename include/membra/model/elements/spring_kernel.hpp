@@ -1,9 +1,28 @@
 #pragma once
 // One spring's energy and force: the single kernel that every force pass, energy sum and
 // measure uses, so energies and forces cannot disagree.
+#include <cmath>
+
 #include "membra/core/vec.hpp"
+#include "membra/model/elements/element_set.hpp"
 
 namespace membra {
+
+// A spring's read-out (element_set.hpp): strain (l - l0) / l0, force k (l - l0), and the stress
+// force / (width x thickness) where its tributary width is known.
+inline ElementStress axial_stress(const Vec3& xa, const Vec3& xb, double l0, double k, double width,
+                                  double thickness) {
+  const double l = (xb - xa).norm();
+  ElementStress e;
+  e.strained = true;
+  e.strain = l0 > 0.0 ? (l - l0) / l0 : 0.0;
+  e.axial = true;
+  e.force = k * (l - l0);
+  if (!(width > 0.0)) return e;
+  e.carries = true;
+  e.stress = thickness > 0.0 ? k * (l - l0) / (width * thickness) : 0.0;
+  return e;
+}
 
 // Elastic energy 1/2 k (l - l0)^2 of a spring between xa and xb (J for SI inputs).
 inline double spring_energy(const Vec3& xa, const Vec3& xb, double l0, double k) {
@@ -47,6 +66,22 @@ inline Eigen::Matrix3d spring_hessian_block(const Vec3& xa, const Vec3& xb, doub
   double g = 1.0 - l0 / l;
   if (project && g < 0.0) g = 0.0;
   return k * ((1.0 - g) * n * n.transpose() + g * Eigen::Matrix3d::Identity());
+}
+
+// The spring's whole Hessian (6 x 6, particles a then b) from its block.
+inline Eigen::Matrix<double, 6, 6> spring_hessian(const Vec3& xa, const Vec3& xb, double l0,
+                                                  double k, bool project) {
+  const Eigen::Matrix3d h = spring_hessian_block(xa, xb, l0, k, project);
+  Eigen::Matrix<double, 6, 6> block;
+  block << h, -h, -h, h;
+  return block;
+}
+
+// A diagonal stiffness for each end (N/m, the static solver's masses): the axial stiffness k plus
+// the geometric (stress) stiffness |k (1 - l0/l)| across the spring.
+inline double spring_stiffness_estimate(const Vec3& xa, const Vec3& xb, double l0, double k) {
+  const double l = (xb - xa).norm();
+  return k * (1.0 + (l > 0.0 ? std::abs(1.0 - l0 / l) : 1.0));
 }
 
 }  // namespace membra

@@ -1,8 +1,8 @@
 #pragma once
-// The springs of a model (the paper's lattice: stretch, shear and flex, plus springs added by
-// add_springs), stored as parallel arrays (structure of arrays) so force passes stream through
-// memory. The set owns its kernel (spring_kernel.hpp), its latex and resin state and the
-// composite rule that turns them into a rest length and a stiffness (docs/process.md).
+// The springs of a model (the paper's lattice: stretch, shear and flex), stored as parallel arrays
+// (structure of arrays) so force passes stream through memory. The set owns its kernel
+// (spring_kernel.hpp), its latex and resin state and the composite rule that turns them into a rest
+// length and a stiffness (docs/process.md).
 #include <array>
 #include <cstdint>
 #include <string_view>
@@ -13,7 +13,8 @@
 
 namespace membra {
 
-// Which lattice family a spring belongs to (the paper's three, plus springs added later).
+// Which lattice family a spring belongs to (the paper's three), and `added` for the springs of
+// add_springs (added_springs.hpp), so that a grow step can name them.
 enum class SpringFamily : std::uint8_t { stretch, shear, flex, added };
 
 std::string_view to_string(SpringFamily f);
@@ -62,8 +63,7 @@ struct Springs {
   ElementStress stress(int i, const Points& x, double thickness) const;
 
   // Composite rule: the resin part (resin and latex in parallel, the resin at rest at its
-  // impregnation length) in series with the latex part along the spring. Added springs keep
-  // what add_springs gave them.
+  // impregnation length) in series with the latex part along the spring.
   void update(int s, const ReleaseLevel& release);
   void update(const ReleaseLevel& release);
   // The frame lets go: every spring's current length is its frame length.
@@ -72,19 +72,23 @@ struct Springs {
   double latex_rest(int s, const ReleaseLevel& release) const;
   // d/df of stiffness and rest length at the spring's current state.
   SpringRate rate(int s, const ReleaseLevel& release) const;
-  // The design's view: the spring's segment (none for an added spring, not part of the sheet),
-  // its fraction set, and d/df of (grad E . w).
+  // The design's view: the spring's segment, its fraction set, and d/df of (grad E . w).
   ResinFootprint footprint(int s, const Points& x) const;
   void set_resin_fraction(int s, double f, const ReleaseLevel& release);
   double resin_rate(int s, const Points& x, const Points& w, const ReleaseLevel& release) const;
 
-  // Resin rule: springs of the sheet (not added ones) inside the pattern become the composite,
+  // Resin rule: springs inside the pattern become the composite,
   // the resin at rest at its current length, as stiff as the resin's lattice of the same family.
   int impregnate(const Impregnation& at);
+  // Growth rule: a spring's latex grows by the growth's length ratio along it (read at its paper
+  // midpoint; the resin keeps its length), through the composite rule.
+  std::vector<LocalGrowth> growth(const GrowthField& field, const Points& paper) const;
+  void grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
+            const ReleaseLevel& release);
   // Cut rule: a spring goes when the cut crosses it.
   bool severed(int i, const CrossesCut& crosses) const { return crosses(a[i], b[i]); }
   // The rebuilt sheet's springs take the old ones' process state (springs an earlier cut removed
-  // stay removed); added springs whose ends survive come along.
+  // stay removed).
   void carry(const Springs& old, const Rebuild& r);
 };
 

@@ -1,0 +1,47 @@
+// Protocol steps on the continuum sheet (docs/model.md, "The continuum shell"): a grow step's
+// radial shrink of exp5 ruffles the sheet into a saddle, as on the lattice; what the continuum
+// cannot take is refused before anything runs, naming the field.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "membra/core/input_error.hpp"
+#include "membra/io/scene.hpp"
+#include "membra/process/run.hpp"
+
+namespace membra {
+namespace {
+
+const std::string kExampleDir = std::string(MEMBRA_SOURCE_DIR) + "/examples/";
+
+// exp5 (the periphery shrinks radially by 15 % at each edge's middle, the centre keeps its
+// length): the rings are too long for their radius, so the sheet takes negative curvature. On a
+// coarse 20 mm mesh, five increments: an anticlastic quadric (k1 > 0 > k2), its radii within a
+// factor two of each other (the square's symmetry), and not flat.
+TEST(ContinuumSteps, RadialShrinkRufflesIntoASaddle) {
+  const Scene scene = load_scene(kExampleDir + "exp5_shrink.json",
+                                 {"model=continuum", "sheet.mesh.max_edge=20",
+                                  "protocol.0.increments=5", "simulation.max_seconds=300"});
+  const RunResult r = run_scene(scene);
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  const QuadricFit& q = r.shape.quadric;
+  ASSERT_TRUE(q.valid);
+  EXPECT_EQ(q.classification, "anticlastic") << q.k1 << " " << q.k2;
+  EXPECT_GT(q.k1, 0.0);
+  EXPECT_LT(q.k2, 0.0);
+  EXPECT_LT(q.k1 / -q.k2, 2.0);
+  EXPECT_GT(q.k1 / -q.k2, 0.5);
+}
+
+TEST(ContinuumSteps, ASpringFamilyGrowthIsRefusedByName) {
+  try {
+    (void)run_scene(load_scene(kExampleDir + "exp5_shrink.json",
+                               {"model=continuum", "protocol.0.family=shear"}));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/protocol/0/family"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace membra
