@@ -112,13 +112,13 @@ nlohmann::json make_design_report(const DesignResult& d) {
   return report;
 }
 
-void stage_design_files(const DesignResult& d, OutputSet& out) {
+void stage_design_files(const DesignResult& d, const RunStaging& s, OutputSet& out) {
   const nlohmann::json scene_file = design_scene(d.spec, d.stencil);
   out.add("scene.json", [scene_file](std::ostream& os) { os << scene_file.dump(2) << '\n'; });
   out.add("target.obj", [&](std::ostream& os) { write_obj(os, d.target.x, d.target.triangles); });
   const nlohmann::json report = make_design_report(d);
   out.add("report.json", [report](std::ostream& os) { os << report.dump(2) << '\n'; });
-  stage_run_files(d.scene, d.run, {}, out);
+  stage_run_files(d.scene, d.run, s, out);
 }
 
 }  // namespace membra

@@ -8,10 +8,12 @@
 namespace membra {
 
 std::string stage_design_outputs(const DesignResult& d, OutputSet& out) {
-  stage_design_files(d, out);
-  const std::string note = stage_design_pictures(d, out);
+  // What the outputs show first, then the writers.
+  const RunStaging staging = prepare_run_staging(d.scene, d.run, {});
+  stage_design_files(d, staging, out);
+  const std::string note = stage_design_pictures(d, staging, out);
   stage_report_page(page_from_staged(out, "Design: " + d.scene.name, d.scene.description,
-                                     run_scales(run_colors(d.run, {})),
+                                     run_scales(staging.colors),
                                      note.empty() ? "" : "No pictures could be rendered: " + note),
                     out);
   return note;

@@ -75,8 +75,8 @@ void stage_comparison(const TargetSurface& target, const Points& x,
 
 }  // namespace
 
-std::string stage_design_pictures(const DesignResult& d, OutputSet& out) {
-  std::string note = stage_run_pictures(d.scene, d.run, {}, out);
+std::string stage_design_pictures(const DesignResult& d, const RunStaging& s, OutputSet& out) {
+  std::string note = stage_run_pictures(d.scene, d.run, s, out);
   if (!note.empty()) return note;
   try {
     Renderer renderer(1400, 700);

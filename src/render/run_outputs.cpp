@@ -16,12 +16,13 @@ StagedRun stage_run_outputs(const Scene& scene, const RunResult& r, const Pictur
                       out);
     return {true, ""};
   }
-  stage_run_files(scene, r, opts, out);
-  const std::string note = stage_run_pictures(scene, r, opts, out);
-  stage_report_page(
-      page_from_staged(out, scene.name, scene.description, run_scales(run_colors(r, opts)),
-                       note.empty() ? "" : "No pictures could be rendered: " + note),
-      out);
+  // What the outputs show first, then the writers.
+  const RunStaging staging = prepare_run_staging(scene, r, opts);
+  stage_run_files(scene, r, staging, out);
+  const std::string note = stage_run_pictures(scene, r, staging, out);
+  stage_report_page(page_from_staged(out, scene.name, scene.description, run_scales(staging.colors),
+                                     note.empty() ? "" : "No pictures could be rendered: " + note),
+                    out);
   return {false, note};
 }
 

@@ -16,6 +16,6 @@ nlohmann::json make_design_report(const DesignResult& d);
 
 // Stages scene.json, target.obj, report.json, final.obj, final.ply, pattern.svg and pattern.dxf
 // in `out` (not committed).
-void stage_design_files(const DesignResult& d, OutputSet& out);
+void stage_design_files(const DesignResult& d, const RunStaging& s, OutputSet& out);
 
 }  // namespace membra

@@ -5,10 +5,11 @@
 
 #include "membra/design/inverse_design.hpp"
 #include "membra/output/output_set.hpp"
+#include "membra/output/run_files.hpp"
 
 namespace membra {
 
 // Stages the pictures in `out` (not committed). Returns "" or why the renders were skipped.
-std::string stage_design_pictures(const DesignResult& d, OutputSet& out);
+std::string stage_design_pictures(const DesignResult& d, const RunStaging& s, OutputSet& out);
 
 }  // namespace membra

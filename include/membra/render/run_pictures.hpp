@@ -12,7 +12,7 @@ namespace membra {
 
 // Stages the pictures in `out` (not committed). Returns "" or, when no OpenGL is available, why
 // the renders were skipped (pattern.png, drawn without OpenGL, is staged anyway).
-std::string stage_run_pictures(const Scene& scene, const RunResult& r, const PictureOptions& opts,
+std::string stage_run_pictures(const Scene& scene, const RunResult& r, const RunStaging& s,
                                OutputSet& out);
 
 }  // namespace membra

@@ -1,0 +1,122 @@
+#include "membra/output/run_staging.hpp"
+
+#include "membra/measure/shape.hpp"
+
+namespace membra {
+
+RunColors run_colors(const RunResult& r, const PictureOptions& opts) {
+  RunColors c;
+  for (double k : r.curvature.density) c.curvature.push_back(k * 1e-6);  // 1/m^2 to 1/mm^2
+  for (double sv : r.vertex_stress) c.stress.push_back(sv * 1e-6);
+  std::tie(c.k_lo, c.k_hi) = symmetric_percentile_range(c.curvature, kCurvaturePercentile, 1e-6);
+  if (opts.curvature_range.size() == 2)
+    c.k_lo = opts.curvature_range[0], c.k_hi = opts.curvature_range[1];
+  std::tie(c.s_lo, c.s_hi) = symmetric_range(c.stress, 1e-3);
+  if (opts.stress_range.size() == 2) c.s_lo = opts.stress_range[0], c.s_hi = opts.stress_range[1];
+  return c;
+}
+
+std::vector<ColourScale> run_scales(const RunColors& c) {
+  return {{"Gaussian curvature", "1/mm^2", c.k_lo, c.k_hi}, {"Stress", "MPa", c.s_lo, c.s_hi}};
+}
+
+namespace {
+
+std::vector<double> in_mm2(const std::vector<double>& per_m2) {
+  std::vector<double> k;
+  k.reserve(per_m2.size());
+  for (double v : per_m2) k.push_back(v * 1e-6);  // 1/m^2 to 1/mm^2
+  return k;
+}
+
+Colouring colouring(const std::vector<double>& values, double lo, double hi) {
+  return {colorize(values, lo, hi), lo, hi};
+}
+
+// The global form (wrinkles finer than the window averaged out, measure/shape.hpp) coloured by
+// its own Gaussian curvature, on the range of the particles a window (1/8 of the sheet) or more
+// inside the edge: the averaging window is cut off at the edge, which bends the global form's
+// rim more sharply than the form itself.
+void stage_global(const RunResult& r, const PictureOptions& opts, RunStaging& s) {
+  const auto& mesh = r.prepared.membrane.sheet;
+  s.global_form = global_form(r.prepared.membrane.state.x, mesh.model.reference);
+  if (s.global_form.cols() != r.prepared.membrane.state.x.cols()) {
+    s.global_form.resize(3, 0);
+    return;
+  }
+  const std::vector<double> k = in_mm2(r.curvature_global.density);
+  std::vector<double> interior;
+  const GridSheet& g = mesh.grid;
+  for (int p = 0; p < g.num_particles(); ++p) {
+    const auto [i, j] = g.node(p);
+    if (8 * i >= g.nx() && 8 * i <= 7 * g.nx() && 8 * j >= g.ny() && 8 * j <= 7 * g.ny())
+      interior.push_back(k[static_cast<size_t>(p)]);
+  }
+  if (mesh.continuum())
+    for (int p = 0; p < mesh.model.num_particles(); ++p) {
+      const Vec2 u =
+          mesh.model.reference.col(p).head<2>().cwiseQuotient(Vec2(g.width(), g.height()));
+      if ((u.array() >= 0.125).all() && (u.array() <= 0.875).all())
+        interior.push_back(k[static_cast<size_t>(p)]);
+    }
+  auto [lo, hi] =
+      symmetric_percentile_range(interior.empty() ? k : interior, kCurvaturePercentile, 1e-6);
+  if (opts.curvature_range.size() == 2) lo = opts.curvature_range[0], hi = opts.curvature_range[1];
+  s.global = colouring(k, lo, hi);
+}
+
+// Frames share one stress range.
+void stage_frames(const RunResult& r, RunStaging& s) {
+  std::vector<double> all;
+  for (const auto& f : r.frames)
+    for (double v : f.stress) all.push_back(v * 1e-6);
+  const auto [lo, hi] = symmetric_range(all, 1e-3);
+  for (const auto& f : r.frames) {
+    std::vector<double> mpa;
+    for (double v : f.stress) mpa.push_back(v * 1e-6);
+    s.frames.push_back(colouring(mpa, lo, hi));
+  }
+}
+
+// The curvature map's target and the measured curvature on the target's range.
+void stage_curvature_map(const RunResult& r, const PictureOptions& opts, RunStaging& s) {
+  const std::vector<double> target = in_mm2(r.curvature_map->target);
+  auto [lo, hi] = symmetric_range(target, 1e-6);
+  if (opts.curvature_range.size() == 2) lo = opts.curvature_range[0], hi = opts.curvature_range[1];
+  s.target = colouring(target, lo, hi);
+  s.measured = colouring(s.colors.curvature, lo, hi);
+}
+
+// Coats on the bottom face go on a layer of their own.
+void stage_patterns(const Scene& scene, RunStaging& s) {
+  s.top = scene_pattern(scene, false);
+  s.bottom = scene_pattern(scene, true);
+  if (!s.top && !s.bottom) return;
+  s.frame = scene_frame(scene);
+  const auto trace = [&](const PatternPtr& p) {
+    return p ? trace_outlines(*p, s.frame, 0.25e-3) : std::vector<Polygon2>{};
+  };
+  s.outlines = trace(s.top);
+  s.underside = trace(s.bottom);
+}
+
+}  // namespace
+
+RunStaging prepare_run_staging(const Scene& scene, const RunResult& r, const PictureOptions& opts) {
+  RunStaging s;
+  s.options = opts;
+  s.colors = run_colors(r, opts);
+  const RunColors& c = s.colors;
+  s.curvature_rgb = colorize(c.curvature, c.k_lo, c.k_hi);
+  s.stress_rgb = colorize(c.stress, c.s_lo, c.s_hi);
+  stage_global(r, opts, s);
+  // Each stable form of an exploration, on the main picture's curvature range.
+  for (const auto& b : r.branches)
+    s.branches.push_back(colouring(in_mm2(b.run.curvature.density), c.k_lo, c.k_hi));
+  stage_frames(r, s);
+  if (r.curvature_map) stage_curvature_map(r, opts, s);
+  stage_patterns(scene, s);
+  return s;
+}
+
+}  // namespace membra
