@@ -109,12 +109,32 @@ FrameEdges read_hold(const JsonObject& o) {
   return hold;
 }
 
+// A frame cannot push a membrane: a stretch may contract one direction no further than a free
+// latex sheet (incompressible) contracts when the other is stretched, 1 / sqrt(lambda_other),
+// as exp2's [1.5, 0.8165] does. Below that the latex would be compressed and only wrinkle.
+void check_not_compressed(const JsonObject& o, const Vec2& stretch) {
+  for (int d = 0; d < 2; ++d) {
+    const double free = 1.0 / std::sqrt(stretch[1 - d]);
+    if (stretch[d] >= std::min(1.0, free) * (1.0 - 1e-4)) continue;
+    std::ostringstream msg;
+    msg << "a stretch of " << stretch[d] << " along " << (d == 0 ? "x" : "y")
+        << " would compress the latex: a frame can only pull a membrane, and a free sheet "
+           "stretched "
+        << stretch[1 - d] << " along " << (d == 0 ? "y" : "x") << " contracts to "
+        << std::min(1.0, free)
+        << " at most (lambda >= 1, or the free contraction 1/sqrt of the "
+           "other lambda; exp2 uses [1.5, 0.8165])";
+    throw InputError(o.pointer("lambda"), msg.str());
+  }
+}
+
 StretchStep read_stretch(const JsonObject& o, Progression& at) {
   StretchStep s;
   const auto l = o.numbers("lambda", 2, Bounds{0.0, 10.0, true});
   s.lambda = Vec2(l[0], l[1]);
   s.hold = read_hold(o);
   at.stretch = at.stretch.cwiseProduct(s.lambda);
+  check_not_compressed(o, at.stretch);
   at.framed = true;
   return s;
 }

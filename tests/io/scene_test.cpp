@@ -263,6 +263,15 @@ TEST(Scene, ProtocolErrorsNameTheField) {
   j = with_protocol(strip);
   j["protocol"][0]["lambda"] = {-1.5, 1};
   EXPECT_EQ(error_at(j), "/protocol/0/lambda/0");
+  // A frame only pulls: a lambda below 1 is refused unless it is no more than the free
+  // contraction of an incompressible sheet stretched the other way (exp2's [1.5, 0.8165]).
+  j = with_protocol(strip);
+  j["protocol"][0]["lambda"] = {0.5, 1.0};
+  EXPECT_EQ(error_at(j), "/protocol/0/lambda");
+  j["protocol"][0]["lambda"] = {1.5, 0.7};
+  EXPECT_EQ(error_at(j), "/protocol/0/lambda");
+  j["protocol"][0]["lambda"] = {1.5, 0.8165};
+  EXPECT_EQ(error_at(j), "");
   j = with_protocol(strip);
   j["protocol"][1]["bilayer"] = "yes";
   EXPECT_EQ(error_at(j), "/protocol/1/bilayer");
