@@ -93,7 +93,8 @@ Vec3 from_y_up(const Vec3& v) {
   return {v.x(), -v.z(), v.y()};
 }
 
-// Positions in mm and smooth (area-weighted) normals, as float triples in glTF's axes.
+// Positions in metres (glTF's unit) and smooth (area-weighted) normals, as float triples in
+// glTF's axes.
 void vertex_arrays(const GlbSheet& s, std::vector<float>& pos, std::vector<float>& nrm) {
   Points normals = Points::Zero(3, s.x.cols());
   for (const Triangle& t : s.triangles) {
@@ -102,7 +103,7 @@ void vertex_arrays(const GlbSheet& s, std::vector<float>& pos, std::vector<float
   }
   for (Eigen::Index p = 0; p < s.x.cols(); ++p) {
     const Vec3 n = normals.col(p).norm() > 0 ? Vec3(normals.col(p).normalized()) : Vec3::UnitZ();
-    const Vec3 q = to_y_up(s.x.col(p) / units::mm), m = to_y_up(n);
+    const Vec3 q = to_y_up(s.x.col(p)), m = to_y_up(n);
     for (int k = 0; k < 3; ++k) {
       pos.push_back(static_cast<float>(q[k]));
       nrm.push_back(static_cast<float>(m[k]));
@@ -185,7 +186,7 @@ void write_glb(std::ostream& out, const GlbSheet& s) {
   m.asset.version = "2.0";
   m.asset.generator = std::string("membra ") + kVersion;
   nlohmann::json extras = s.extras;
-  extras["unit"] = "mm";
+  extras["unit"] = "m";
   extras["up"] = "membra's z is glTF's y: positions are (x, z, -y) of membra's";
   extras["attributes"] = {
       {"COLOR_0", "Gaussian curvature colours"},
@@ -265,8 +266,7 @@ GlbSheet read_glb(const std::filesystem::path& file) {
   const auto pos = read_floats(m, prim, "POSITION", 3, where);
   s.x.resize(3, static_cast<Eigen::Index>(pos.size() / 3));
   for (size_t i = 0; i + 2 < pos.size(); i += 3)
-    s.x.col(static_cast<Eigen::Index>(i / 3)) =
-        from_y_up(Vec3(pos[i], pos[i + 1], pos[i + 2])) * units::mm;
+    s.x.col(static_cast<Eigen::Index>(i / 3)) = from_y_up(Vec3(pos[i], pos[i + 1], pos[i + 2]));
   s.curvature_colors = srgb_colors(read_floats(m, prim, "COLOR_0", 3, where));
   s.stress_colors = srgb_colors(read_floats(m, prim, "COLOR_1", 3, where));
   for (float v : read_floats(m, prim, "_CURVATURE", 1, where)) s.curvature.push_back(v);

@@ -213,6 +213,9 @@ const char* kViewScript = R"(
                                     -Math.cos(el) * Math.sin(az));
       const d = sphere.radius / Math.sin(camera.fov * Math.PI / 360) * 0.7;
       camera.position.copy(sphere.center).addScaledVector(dir, d);
+      camera.near = d / 100;  // final.glb is in metres: clip planes at the form's own scale
+      camera.far = d * 100;
+      camera.updateProjectionMatrix();
       controls.target.copy(sphere.center);
       controls.update();
     }

@@ -37,7 +37,7 @@ TEST(Gltf, WritesAndReadsBackVerticesColoursAndValues) {
 
   const GlbSheet r = read_glb(file);
   ASSERT_EQ(r.x.cols(), s.x.cols());
-  EXPECT_LT((r.x - s.x).cwiseAbs().maxCoeff(), 1e-9);  // float mm: 1e-6 mm of 30 mm
+  EXPECT_LT((r.x - s.x).cwiseAbs().maxCoeff(), 1e-8);  // float metres: 1e-5 mm of 30 mm
   ASSERT_EQ(r.triangles.size(), s.triangles.size());
   for (size_t t = 0; t < s.triangles.size(); ++t) EXPECT_EQ(r.triangles[t], s.triangles[t]);
   ASSERT_EQ(r.curvature_colors.size(), s.curvature_colors.size());
@@ -47,7 +47,7 @@ TEST(Gltf, WritesAndReadsBackVerticesColoursAndValues) {
     EXPECT_NEAR(r.curvature[p], s.curvature[p], 1e-6 * std::abs(s.curvature[p]) + 1e-12);
     EXPECT_NEAR(r.stress[p], s.stress[p], 1e-6);
   }
-  EXPECT_EQ(r.extras.value("unit", ""), "mm");
+  EXPECT_EQ(r.extras.value("unit", ""), "m");
   EXPECT_EQ(r.extras.value("name", ""), "test");
   std::filesystem::remove(file);
 }
@@ -106,11 +106,11 @@ TEST(Gltf, TheFormStandsUprightInGltfAxes) {
   const auto& view = doc["bufferViews"][acc["bufferView"].get<int>()];
   float centre[3];
   std::memcpy(centre, b.data() + bin + view.value("byteOffset", 0) + 4 * 3 * 4, sizeof centre);
-  EXPECT_FLOAT_EQ(centre[1], 5.0f);    // the raised middle: up is y, in mm
-  EXPECT_FLOAT_EQ(centre[2], -10.0f);  // membra's y = 10 mm is glTF's z = -10 mm
-  EXPECT_FLOAT_EQ(acc["max"][1].get<float>(), 5.0f);
-  EXPECT_FLOAT_EQ(acc["min"][2].get<float>(), -20.0f);
-  EXPECT_EQ(doc["asset"]["extras"]["unit"], "mm");
+  EXPECT_FLOAT_EQ(centre[1], 0.005f);   // the raised middle: up is y, in metres (glTF's unit)
+  EXPECT_FLOAT_EQ(centre[2], -0.010f);  // membra's y = 10 mm is glTF's z = -0.01 m
+  EXPECT_FLOAT_EQ(acc["max"][1].get<float>(), 0.005f);
+  EXPECT_FLOAT_EQ(acc["min"][2].get<float>(), -0.020f);
+  EXPECT_EQ(doc["asset"]["extras"]["unit"], "m");
 }
 
 }  // namespace
