@@ -53,16 +53,23 @@ int cut_along(Membrane& m, const std::vector<Vec2>& line, std::vector<Vec2>* whe
     return crosses_polyline(x.col(p).head<2>(), x.col(q).head<2>(), line);
   };
   Model& model = m.sheet.model;
-  // The springs decide whether the line cuts the sheet at all (and where, for the report).
-  const std::vector<bool> keep = survivors_of_cut(model.springs, crosses);
-  const int removed = static_cast<int>(std::count(keep.begin(), keep.end(), false));
+  // The springs, the lattice's and the added, decide whether the line cuts the sheet at all (and
+  // where, for the report).
+  int removed = 0;
+  const auto count_cut = [&](const auto& springs) {
+    const std::vector<bool> keep = survivors_of_cut(springs, crosses);
+    for (int s = 0; s < springs.size(); ++s) {
+      if (keep[static_cast<size_t>(s)]) continue;
+      ++removed;
+      if (!where) continue;
+      const Vec3 mid =
+          0.5 * (model.reference.col(springs.a[s]) + model.reference.col(springs.b[s]));
+      where->push_back(mid.head<2>());
+    }
+  };
+  count_cut(model.springs);
+  count_cut(model.added_springs);
   if (removed == 0) return 0;
-  if (where)
-    for (int s = 0; s < model.springs.size(); ++s)
-      if (!keep[static_cast<size_t>(s)])
-        where->push_back(0.5 * (model.reference.col(model.springs.a[s]) +
-                                model.reference.col(model.springs.b[s]))
-                                   .head<2>());
   model.for_each_set([&](auto& set) { set.filter(survivors_of_cut(set, crosses)); });
   std::erase_if(m.sheet.triangles, [&](const Triangle& t) {
     return crosses(t[0], t[1]) || crosses(t[1], t[2]) || crosses(t[2], t[0]);

@@ -69,7 +69,7 @@ TEST(SmallSetups, AHangingChainSettlesNearTheCatenary) {
   model.pin(0);
   model.pin(segments);
   for (int i = 0; i < segments; ++i)
-    model.springs.add(i, i + 1, seg, 1e4 / seg, 0.0, SpringFamily::added);
+    model.springs.add(i, i + 1, seg, 1e4 / seg, 0.0, SpringFamily::stretch);
   model.gravity = Vec3(0, 0, -9.81);
   model.velocity_damping = 4.0;
   State st = State::at_rest(model);

@@ -59,7 +59,8 @@ TEST(HangingChain, SagMatchesTheCatenaryWithinOnePercent) {
   }
   model.pin(0);
   model.pin(segments);
-  for (int i = 0; i < segments; ++i) model.springs.add(i, i + 1, seg, k, 0.0, SpringFamily::added);
+  for (int i = 0; i < segments; ++i)
+    model.springs.add(i, i + 1, seg, k, 0.0, SpringFamily::stretch);
   model.gravity = Vec3(0, 0, -9.81);
   model.velocity_damping = 4.0;
 

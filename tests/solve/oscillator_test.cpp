@@ -22,7 +22,7 @@ Model oscillator() {
   const int anchor = m.add_particle(1.0, Vec3::Zero());
   const int bob = m.add_particle(kMass, Vec3(kRest, 0, 0));
   m.pin(anchor);
-  m.springs.add(anchor, bob, kRest, kStiffness, 0.0, SpringFamily::added);
+  m.springs.add(anchor, bob, kRest, kStiffness, 0.0, SpringFamily::stretch);
   return m;
 }
 

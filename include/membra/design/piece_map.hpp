@@ -35,7 +35,7 @@ class PieceMap final : public ResinMap {
     double fraction = 0.0;
     std::vector<std::pair<int, double>> rate;
   };
-  // Element i of element set k (Model::for_each_set order: 0 springs, 1 bending).
+  // Element i of element set k (Model::for_each_set order: 0 springs, 1 added springs, 2 bending).
   Coverage element_coverage(size_t k, int i, const Eigen::VectorXd& t) const;
 
  private:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <tuple>
 
 #include "membra/model/elements/spring_kernel.hpp"
@@ -28,6 +29,8 @@ std::string_view to_string(SpringFamily f) {
 }
 
 int Springs::add(int pa, int pb, double l0, double k, double c, SpringFamily f, double w) {
+  if (f == SpringFamily::added)
+    throw std::invalid_argument("springs: added springs are a set of their own (AddedSprings)");
   a.push_back(pa);
   b.push_back(pb);
   rest_length.push_back(l0);
