@@ -93,12 +93,15 @@ LocalGrowth triangle_growth(const GrowthField& field, const Points& paper, int a
   return field.at(id, p, "triangle");
 }
 
-Eigen::Matrix2d edge_basis_stretch(const LocalGrowth& g, const Points& paper, int a, int b, int c,
-                                   double exponent) {
+double grow_metrics(const LocalGrowth& g, const Points& paper, int a, int b, int c, double exponent,
+                    Eigen::Matrix2d& natural, Eigen::Matrix2d& frame) {
   Eigen::Matrix2d e;
   e << paper.col(b).head<2>() - paper.col(a).head<2>(),
       paper.col(c).head<2>() - paper.col(a).head<2>();
-  return e.inverse() * g.stretch(exponent) * e;
+  const Eigen::Matrix2d s = e.inverse() * g.stretch(exponent) * e;
+  natural = s.transpose() * natural * s;
+  frame = s.transpose() * frame * s;
+  return std::abs(s.determinant());
 }
 
 void MembraneTriangles::add(const std::array<int, 3>& ids, const Vec3& p0, const Vec3& p1,
@@ -223,22 +226,13 @@ int MembraneTriangles::impregnate(const Impregnation& at) {
   return count;
 }
 
-std::vector<LocalGrowth> MembraneTriangles::growth(const GrowthField& field,
-                                                   const Points& paper) const {
-  std::vector<LocalGrowth> g;
-  g.reserve(v.size());
-  for (const auto& p : v) g.push_back(triangle_growth(field, paper, p[0], p[1], p[2]));
-  return g;
-}
-
 void MembraneTriangles::grow(const std::vector<LocalGrowth>& g, const Points& paper,
                              double exponent, const ReleaseLevel& release) {
   for (size_t k = 0; k < v.size(); ++k) {
     if (g[k].none()) continue;
-    const Eigen::Matrix2d s = edge_basis_stretch(g[k], paper, v[k][0], v[k][1], v[k][2], exponent);
-    natural_metric[k] = s.transpose() * natural_metric[k] * s;
-    frame_metric[k] = s.transpose() * frame_metric[k] * s;
-    latex[k].volume *= std::abs(s.determinant());  // the latex grows in area, not in thickness
+    // The latex grows in area, not in thickness.
+    latex[k].volume *= grow_metrics(g[k], paper, v[k][0], v[k][1], v[k][2], exponent,
+                                    natural_metric[k], frame_metric[k]);
   }
   update(release);
 }

@@ -345,22 +345,12 @@ int ShellTriangles::impregnate(const Impregnation& at) {
   return count;
 }
 
-std::vector<LocalGrowth> ShellTriangles::growth(const GrowthField& field,
-                                                const Points& paper) const {
-  std::vector<LocalGrowth> g;
-  g.reserve(v.size());
-  for (const auto& p : v) g.push_back(triangle_growth(field, paper, p[0], p[1], p[2]));
-  return g;
-}
-
 void ShellTriangles::grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
                           const ReleaseLevel& release) {
   for (size_t k = 0; k < v.size(); ++k) {
     if (g[k].none()) continue;
-    const Eigen::Matrix2d s = edge_basis_stretch(g[k], paper, v[k][0], v[k][1], v[k][2], exponent);
-    natural_metric[k] = s.transpose() * natural_metric[k] * s;
-    frame_metric[k] = s.transpose() * frame_metric[k] * s;
-    latex[k].area *= std::abs(s.determinant());
+    latex[k].area *= grow_metrics(g[k], paper, v[k][0], v[k][1], v[k][2], exponent,
+                                  natural_metric[k], frame_metric[k]);
   }
   update(release);
 }

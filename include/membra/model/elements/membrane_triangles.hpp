@@ -31,6 +31,24 @@ struct LayerRest {
   LawConstants law;
 };
 
+// Both triangle sets' growth rule: the growth of triangle (a, b, c) read from the field at its
+// paper positions; and a share e of it applied to the triangle's natural and frame metrics by the
+// stretch P = E^-1 A^e E it makes in the edge basis E (a metric G grows to P^T G P). Returns
+// det P, the growth of the triangle's area.
+LocalGrowth triangle_growth(const GrowthField& field, const Points& paper, int a, int b, int c);
+double grow_metrics(const LocalGrowth& g, const Points& paper, int a, int b, int c, double exponent,
+                    Eigen::Matrix2d& natural, Eigen::Matrix2d& frame);
+
+// The growth of each triangle of a set whose elements start with their three corners.
+template <size_t N>
+std::vector<LocalGrowth> triangles_growth(const std::vector<std::array<int, N>>& v,
+                                          const GrowthField& field, const Points& paper) {
+  std::vector<LocalGrowth> g;
+  g.reserve(v.size());
+  for (const auto& p : v) g.push_back(triangle_growth(field, paper, p[0], p[1], p[2]));
+  return g;
+}
+
 struct MembraneTriangles {
   static constexpr int kArity = 3;
   static constexpr std::string_view kName = "membrane";
@@ -77,7 +95,9 @@ struct MembraneTriangles {
   // Growth rule: the growth read at the centroid (blended by the share of the outline inside a
   // grow region) stretches the latex's natural and frame metrics, G -> P^T G P with P the
   // stretch in the triangle's edge basis; the resin keeps its metric.
-  std::vector<LocalGrowth> growth(const GrowthField& field, const Points& paper) const;
+  std::vector<LocalGrowth> growth(const GrowthField& field, const Points& paper) const {
+    return triangles_growth(v, field, paper);
+  }
   void grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
             const ReleaseLevel& release);
   // The design's resin maps do not place resin on triangles yet.
@@ -93,13 +113,6 @@ Eigen::Matrix2d triangle_metric(const Vec3& x0, const Vec3& x1, const Vec3& x2);
 // natural one before the release begins), as the springs' rest lengths move.
 Eigen::Matrix2d released_metric(const Eigen::Matrix2d& natural, const Eigen::Matrix2d& frame,
                                 const ReleaseLevel& release);
-
-// Both triangle sets' growth rule: the growth of triangle (a, b, c) read from the field at its
-// paper positions, and the stretch P = E^-1 A^e E that a share e of it makes in the triangle's
-// edge basis E (a metric G grows to P^T G P).
-LocalGrowth triangle_growth(const GrowthField& field, const Points& paper, int a, int b, int c);
-Eigen::Matrix2d edge_basis_stretch(const LocalGrowth& g, const Points& paper, int a, int b, int c,
-                                   double exponent);
 
 // Does the impregnation's pattern cover the triangle of particles a, b, c (its centroid, at the
 // positions it was impregnated in)? With meshes that follow the pattern, a triangle is in or out.

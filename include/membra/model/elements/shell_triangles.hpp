@@ -84,7 +84,9 @@ struct ShellTriangles {
   }
   void carry(const ShellTriangles& old, const Rebuild& r);
   // Growth rule: the latex's metric grows as the membrane's (triangle_growth); its plate follows.
-  std::vector<LocalGrowth> growth(const GrowthField& field, const Points& paper) const;
+  std::vector<LocalGrowth> growth(const GrowthField& field, const Points& paper) const {
+    return triangles_growth(v, field, paper);
+  }
   void grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
             const ReleaseLevel& release);
   ResinFootprint footprint(int, const Points&) const { return {}; }
