@@ -1,4 +1,5 @@
 // membra: the command-line tool. Thin: it parses arguments, calls the library and reports.
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -86,10 +87,16 @@ bool warn_if_not_at_rest(const std::string& scene_file, const membra::Scene& sce
   std::cerr << "membra: " << scene_file << ": "
             << (r.solve.converged ? "the end state is a saddle of the energy, not a stable form: "
                                   : "not converged: ")
-            << (r.solve.converged ? r.stability.message : r.solve.message) << "\n"
-            << "membra: try more release increments (\"increments\"), another perturbation seed, "
-               "or the other equilibrium solver (--set simulation.solver=static|newton); the "
-               "outputs show the end state as it is\n";
+            << (r.solve.converged ? r.stability.message : r.solve.message) << "\n";
+  if (r.out_of_time)
+    std::cerr << "membra: the run ran out of its wall-time budget: raise it, e.g. --set "
+                 "simulation.max_seconds="
+              << std::ceil(4.0 * scene.simulation.max_seconds)
+              << "; the outputs show the end state as it is\n";
+  else
+    std::cerr << "membra: try more release increments (\"increments\"), another perturbation "
+                 "seed, or the other equilibrium solver (--set simulation.solver=static|newton); "
+                 "the outputs show the end state as it is\n";
   return true;
 }
 

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "membra/core/did_you_mean.hpp"
+
 namespace membra {
 
 std::vector<std::string> to_strings(const std::vector<std::string_view>& keys) {
@@ -46,7 +48,8 @@ JsonObject::JsonObject(const nlohmann::json& j, std::string pointer,
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
     std::string list;
     for (auto k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-    throw InputError(this->pointer(key), "unknown key '" + key + "' (known here: " + list + ")");
+    throw InputError(this->pointer(key), "unknown key '" + key + "'" + did_you_mean(key, known) +
+                                             "; known here: " + list);
   }
 }
 
@@ -96,7 +99,7 @@ std::string JsonObject::string(std::string_view key, std::optional<std::string> 
   if (!choices.empty() && std::find(choices.begin(), choices.end(), s) == choices.end()) {
     std::string list;
     for (auto c : choices) list += (list.empty() ? "" : ", ") + std::string(c);
-    throw InputError(pointer(key), "'" + s + "' is not one of: " + list);
+    throw InputError(pointer(key), "'" + s + "' is not one of: " + list + did_you_mean(s, choices));
   }
   return s;
 }

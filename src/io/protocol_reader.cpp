@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "membra/core/did_you_mean.hpp"
 #include "membra/core/units.hpp"
 #include "membra/io/field_reader.hpp"
 #include "membra/io/pattern_reader.hpp"
@@ -153,8 +154,7 @@ ImpregnateStep read_impregnate(const JsonObject& o, const Progression& at) {
   }
   const std::string mat = o.string("material", "epoxy");
   const auto it = at.materials.find(mat);
-  if (it == at.materials.end())
-    throw InputError(o.pointer("material"), "unknown material '" + mat + "'");
+  if (it == at.materials.end()) throw unknown_material(o.pointer("material"), mat, at.materials);
   s.resin = it->second;
   s.resin_side = o.string("resin_side", "top", {"top", "bottom"}) == "top" ? 1 : -1;
   s.bilayer = o.boolean("bilayer", false);
@@ -347,6 +347,19 @@ ProtocolStep read_step(const json& j, const std::string& ptr, Progression& at) {
 }
 
 }  // namespace
+
+InputError unknown_material(const std::string& pointer, const std::string& name,
+                            const std::map<std::string, Material>& materials) {
+  std::vector<std::string_view> known;
+  std::string list;
+  for (const auto& [key, material] : materials) {
+    known.push_back(key);
+    list += (list.empty() ? "" : ", ") + key;
+  }
+  return InputError(pointer, "unknown material '" + name + "'" + did_you_mean(name, known) +
+                                 "; known: " + list +
+                                 " (define others under /materials, with a preset to start from)");
+}
 
 void parse_protocol(const JsonObject& top, const std::map<std::string, Material>& materials,
                     const std::filesystem::path& base_dir, Scene& scene) {

@@ -142,10 +142,7 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
   parse_mesh(sheet, scene);
   const std::string mat = sheet.string("material", "latex");
   const auto it = materials.find(mat);
-  if (it == materials.end())
-    throw InputError(sheet.pointer("material"), "unknown material '" + mat +
-                                                    "': define it under /materials or use a preset "
-                                                    "(latex, epoxy)");
+  if (it == materials.end()) throw unknown_material(sheet.pointer("material"), mat, materials);
   scene.sheet.material = it->second;
   scene.sheet.bending = sheet.boolean("bending", true);
   scene.outline = sheet.string("outline", "rectangle", {"rectangle", "disk"});
@@ -343,6 +340,13 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
     s.file = file;
     return s;
   } catch (const InputError& e) {
+    // A value a --set gave is the flag's fault, not the file's.
+    for (const auto& o : overrides) {
+      std::string pointer = "/" + o.substr(0, o.find('='));
+      std::replace(pointer.begin(), pointer.end(), '.', '/');
+      if (e.where() == pointer || e.where().rfind(pointer + "/", 0) == 0)
+        throw InputError("--set " + o + " (on " + name + "): " + e.where(), e.detail());
+    }
     throw InputError(e.where().empty() ? name : name + ": " + e.where(), e.detail());
   }
 }

@@ -216,6 +216,24 @@ TEST_F(SceneFile, FieldErrorsNameFileAndPointer) {
   }
 }
 
+TEST_F(SceneFile, ABadSetValueNamesTheFlagNotTheFile) {
+  const auto f = write("good.json", minimal().dump());
+  try {
+    load_scene(f, {"sheet.size=abc"});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "--set sheet.size=abc (on " + f.string() + "): /sheet/size");
+  }
+  try {  // an error of the file itself still names the file
+    json j = minimal();
+    j["sheet"]["resolution"] = {0, 6};
+    load_scene(write("zero.json", j.dump()), {"sheet.size=[100,50]"});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), (dir / "zero.json").string() + ": /sheet/resolution/0");
+  }
+}
+
 TEST_F(SceneFile, MissingFile) {
   EXPECT_THROW(load_scene(dir / "nope.json"), InputError);
 }

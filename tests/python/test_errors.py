@@ -12,6 +12,7 @@ def test_a_bad_field_names_its_json_pointer(root):
         membra.Scene(root / "examples" / "exp1_basic.json", set={"sheet.size": [-200, 200]})
     assert e.value.pointer.endswith("/sheet/size/0")
     assert "exp1_basic.json" in str(e.value)
+    assert "sheet.size=" in str(e.value)  # the override at fault is named
     assert isinstance(e.value, ValueError)
 
 

@@ -16,6 +16,11 @@ namespace membra {
 
 // Reads top["protocol"] into scene.protocol (the sheet, pins and simulation already read).
 // Throws InputError naming the field.
+// The error for a material that is neither defined under /materials nor a preset: it lists the
+// known ones and suggests the nearest.
+InputError unknown_material(const std::string& pointer, const std::string& name,
+                            const std::map<std::string, Material>& materials);
+
 void parse_protocol(const JsonObject& top, const std::map<std::string, Material>& materials,
                     const std::filesystem::path& base_dir, Scene& scene);
 
