@@ -4,10 +4,22 @@
 
 namespace membra {
 
+namespace {
+
+// SI values in the outputs' units, which are all 1e-6 of them: 1/m^2 to 1/mm^2, Pa to MPa.
+std::vector<double> in_output_units(const std::vector<double>& si) {
+  std::vector<double> out;
+  out.reserve(si.size());
+  for (double v : si) out.push_back(v * 1e-6);
+  return out;
+}
+
+}  // namespace
+
 RunColors run_colors(const RunResult& r, const PictureOptions& opts) {
   RunColors c;
-  for (double k : r.curvature.density) c.curvature.push_back(k * 1e-6);  // 1/m^2 to 1/mm^2
-  for (double sv : r.vertex_stress) c.stress.push_back(sv * 1e-6);
+  c.curvature = in_output_units(r.curvature.density);  // 1/mm^2
+  c.stress = in_output_units(r.vertex_stress);         // MPa
   std::tie(c.k_lo, c.k_hi) = symmetric_percentile_range(c.curvature, kCurvaturePercentile, 1e-6);
   if (opts.curvature_range.size() == 2)
     c.k_lo = opts.curvature_range[0], c.k_hi = opts.curvature_range[1];
@@ -21,13 +33,6 @@ std::vector<ColourScale> run_scales(const RunColors& c) {
 }
 
 namespace {
-
-std::vector<double> in_mm2(const std::vector<double>& per_m2) {
-  std::vector<double> k;
-  k.reserve(per_m2.size());
-  for (double v : per_m2) k.push_back(v * 1e-6);  // 1/m^2 to 1/mm^2
-  return k;
-}
 
 Colouring colouring(const std::vector<double>& values, double lo, double hi) {
   return {colorize(values, lo, hi), lo, hi};
@@ -44,7 +49,7 @@ void stage_global(const RunResult& r, const PictureOptions& opts, RunStaging& s)
     s.global_form.resize(3, 0);
     return;
   }
-  const std::vector<double> k = in_mm2(r.curvature_global.density);
+  const std::vector<double> k = in_output_units(r.curvature_global.density);
   std::vector<double> interior;
   const GridSheet& g = mesh.grid;
   for (int p = 0; p < g.num_particles(); ++p) {
@@ -67,20 +72,19 @@ void stage_global(const RunResult& r, const PictureOptions& opts, RunStaging& s)
 
 // Frames share one stress range.
 void stage_frames(const RunResult& r, RunStaging& s) {
+  std::vector<std::vector<double>> mpa;
   std::vector<double> all;
-  for (const auto& f : r.frames)
-    for (double v : f.stress) all.push_back(v * 1e-6);
-  const auto [lo, hi] = symmetric_range(all, 1e-3);
   for (const auto& f : r.frames) {
-    std::vector<double> mpa;
-    for (double v : f.stress) mpa.push_back(v * 1e-6);
-    s.frames.push_back(colouring(mpa, lo, hi));
+    mpa.push_back(in_output_units(f.stress));
+    all.insert(all.end(), mpa.back().begin(), mpa.back().end());
   }
+  const auto [lo, hi] = symmetric_range(all, 1e-3);
+  for (const auto& m : mpa) s.frames.push_back(colouring(m, lo, hi));
 }
 
 // The curvature map's target and the measured curvature on the target's range.
 void stage_curvature_map(const RunResult& r, const PictureOptions& opts, RunStaging& s) {
-  const std::vector<double> target = in_mm2(r.curvature_map->target);
+  const std::vector<double> target = in_output_units(r.curvature_map->target);
   auto [lo, hi] = symmetric_range(target, 1e-6);
   if (opts.curvature_range.size() == 2) lo = opts.curvature_range[0], hi = opts.curvature_range[1];
   s.target = colouring(target, lo, hi);
@@ -112,7 +116,7 @@ RunStaging prepare_run_staging(const Scene& scene, const RunResult& r, const Pic
   stage_global(r, opts, s);
   // Each stable form of an exploration, on the main picture's curvature range.
   for (const auto& b : r.branches)
-    s.branches.push_back(colouring(in_mm2(b.run.curvature.density), c.k_lo, c.k_hi));
+    s.branches.push_back(colouring(in_output_units(b.run.curvature.density), c.k_lo, c.k_hi));
   stage_frames(r, s);
   if (r.curvature_map) stage_curvature_map(r, opts, s);
   stage_patterns(scene, s);

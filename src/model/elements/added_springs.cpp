@@ -54,15 +54,7 @@ double AddedSprings::energy(int i, const Points& x) const {
 
 void AddedSprings::add_forces(const Points& x, const Points* v, int begin, int end,
                               Points& f) const {
-  for (int i = begin; i < end; ++i) {
-    const int pa = a[i], pb = b[i];
-    const Vec3 fa =
-        v ? spring_force_on_a(x.col(pa), x.col(pb), v->col(pa), v->col(pb), rest_length[i],
-                              stiffness[i], damping[i])
-          : spring_static_force_on_a(x.col(pa), x.col(pb), rest_length[i], stiffness[i]);
-    f.col(pa) += fa;
-    f.col(pb) -= fa;
-  }
+  add_spring_forces(a, b, rest_length, stiffness, damping, x, v, begin, end, f);
 }
 
 Eigen::Matrix<double, 6, 6> AddedSprings::hessian(int i, const Points& x, bool project) const {
@@ -84,18 +76,16 @@ ElementStress AddedSprings::stress(int i, const Points& x, double thickness) con
 
 std::vector<LocalGrowth> AddedSprings::growth(const GrowthField& field, const Points& paper) const {
   std::vector<LocalGrowth> g(static_cast<size_t>(size()));
-  for (int s = 0; s < size(); ++s) {
-    const std::array<Vec2, 2> p = {paper.col(a[s]).head<2>(), paper.col(b[s]).head<2>()};
-    g[static_cast<size_t>(s)] = field.at(ids(s), p, to_string(SpringFamily::added));
-  }
+  for (int s = 0; s < size(); ++s)
+    g[static_cast<size_t>(s)] =
+        segment_growth(field, paper, a[s], b[s], to_string(SpringFamily::added));
   return g;
 }
 
 void AddedSprings::grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
                         const ReleaseLevel&) {
   for (int s = 0; s < size(); ++s) {
-    const double ratio =
-        g[static_cast<size_t>(s)].ratio(paper.col(b[s]).head<2>() - paper.col(a[s]).head<2>());
+    const double ratio = segment_ratio(g[static_cast<size_t>(s)], paper, a[s], b[s]);
     if (ratio != 1.0) rest_length[s] *= std::pow(ratio, exponent);
   }
 }

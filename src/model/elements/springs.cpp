@@ -70,22 +70,7 @@ double Springs::energy(int i, const Points& x) const {
 }
 
 void Springs::add_forces(const Points& x, const Points* v, int begin, int end, Points& f) const {
-  if (!v) {  // static: no damping, the lean kernel (2x faster)
-    for (int i = begin; i < end; ++i) {
-      const int pa = a[i], pb = b[i];
-      const Vec3 fa = spring_static_force_on_a(x.col(pa), x.col(pb), rest_length[i], stiffness[i]);
-      f.col(pa) += fa;
-      f.col(pb) -= fa;
-    }
-    return;
-  }
-  for (int i = begin; i < end; ++i) {
-    const int pa = a[i], pb = b[i];
-    const Vec3 fa = spring_force_on_a(x.col(pa), x.col(pb), v->col(pa), v->col(pb), rest_length[i],
-                                      stiffness[i], damping[i]);
-    f.col(pa) += fa;
-    f.col(pb) -= fa;
-  }
+  add_spring_forces(a, b, rest_length, stiffness, damping, x, v, begin, end, f);
 }
 
 Eigen::Matrix<double, 6, 6> Springs::hessian(int i, const Points& x, bool project) const {
@@ -167,19 +152,15 @@ double Springs::resin_rate(int s, const Points& x, const Points& w,
 
 std::vector<LocalGrowth> Springs::growth(const GrowthField& field, const Points& paper) const {
   std::vector<LocalGrowth> g(static_cast<size_t>(size()));
-  for (int s = 0; s < size(); ++s) {
-    const std::array<int, 2> id = ids(s);
-    const std::array<Vec2, 2> p = {paper.col(a[s]).head<2>(), paper.col(b[s]).head<2>()};
-    g[static_cast<size_t>(s)] = field.at(id, p, to_string(family[s]));
-  }
+  for (int s = 0; s < size(); ++s)
+    g[static_cast<size_t>(s)] = segment_growth(field, paper, a[s], b[s], to_string(family[s]));
   return g;
 }
 
 void Springs::grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
                    const ReleaseLevel& release) {
   for (int s = 0; s < size(); ++s) {
-    const double ratio =
-        g[static_cast<size_t>(s)].ratio(paper.col(b[s]).head<2>() - paper.col(a[s]).head<2>());
+    const double ratio = segment_ratio(g[static_cast<size_t>(s)], paper, a[s], b[s]);
     if (ratio == 1.0) continue;
     const double k = std::pow(ratio, exponent);
     natural_length[s] *= k;
