@@ -15,20 +15,19 @@ int Model::add_particle(double m, const Vec3& x) {
   return static_cast<int>(n);
 }
 
-double mean_rest_length(const Model& model) {
-  double sum = 0.0, edges = 0.0;
-  long count = 0, triangles = 0;
+double saddle_escape_length(const Model& model) {
+  double sum = 0.0;
+  long count = 0;
   model.for_each_set([&](const auto& set) {
     if constexpr (requires { set.rest_length; }) {
       for (double l : set.rest_length) sum += l;
       count += static_cast<long>(set.rest_length.size());
-    } else if constexpr (requires { set.natural_metric; }) {
-      for (const auto& g : set.natural_metric) edges += std::sqrt(g(0, 0)) + std::sqrt(g(1, 1));
-      triangles += static_cast<long>(set.natural_metric.size());
     }
   });
   if (count > 0) return sum / static_cast<double>(count);
-  return triangles > 0 ? edges / static_cast<double>(2 * triangles) : 1.0;
+  if (model.reference.cols() < 2) return 1.0;
+  const Vec3 extent = model.reference.rowwise().maxCoeff() - model.reference.rowwise().minCoeff();
+  return std::max(extent.x(), extent.y());
 }
 
 State State::at_rest(const Model& model) {

@@ -69,15 +69,30 @@ void HessianAssembler::add_block(const Eigen::Matrix<double, 3 * N, 3 * N>& bloc
       if (*slot >= 0) val[*slot] += block(r, c);
 }
 
+// The elements' blocks are computed on all threads, a batch at a time, into a buffer, then added
+// in element order on one thread: the matrix is the same bit for bit whatever the number of
+// threads, and the buffer stays small.
 const Eigen::SparseMatrix<double>& HessianAssembler::assemble(const Points& x, bool project) {
   std::fill(h_.valuePtr(), h_.valuePtr() + h_.nonZeros(), 0.0);
+  constexpr int kBatch = 1024;
   size_t k = 0;
   model_->for_each_set([&](const auto& set) {
     constexpr int n = std::decay_t<decltype(set)>::kArity;
+    using Block = Eigen::Matrix<double, 3 * n, 3 * n>;
     const std::vector<int>& slots = slots_[k++];
-    for (int e = 0; e < set.size(); ++e)
-      if (set.active(e))
-        add_block<n>(set.hessian(e, x, project), &slots[static_cast<size_t>(e) * 9 * n * n]);
+    std::vector<Block> blocks(static_cast<size_t>(std::min(set.size(), kBatch)));
+    for (int first = 0; first < set.size(); first += kBatch) {
+      const int count = std::min(kBatch, set.size() - first);
+#pragma omp parallel for schedule(dynamic, 16) if (count * n * n >= 4096)
+      for (int j = 0; j < count; ++j)
+        if (set.active(first + j))
+          blocks[static_cast<size_t>(j)] = set.hessian(first + j, x, project);
+      for (int j = 0; j < count; ++j) {
+        const int e = first + j;
+        if (set.active(e))
+          add_block<n>(blocks[static_cast<size_t>(j)], &slots[static_cast<size_t>(e) * 9 * n * n]);
+      }
+    }
   });
   return h_;
 }

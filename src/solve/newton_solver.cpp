@@ -73,7 +73,7 @@ class Newton {
         projected_(ws.projected),
         llt_(ws.llt),
         analysed_(ws.analysed) {
-    length_ = mean_rest_length(model);
+    length_ = saddle_escape_length(model);
   }
 
   void run(const Stopwatch& clock);
@@ -103,7 +103,7 @@ class Newton {
   Points f_;
   double energy_ = 0.0;
   double mu_ = 1e-8;       // shift of the projected matrix, in units of its diagonal
-  double length_ = 1.0;    // m, mean spring rest length: the scale of a saddle escape
+  double length_ = 1.0;    // m, the scale of a saddle escape (saddle_escape_length)
   bool try_exact_ = true;  // the last steps suggest the Hessian is positive definite
   double last_alpha_ = 0.0;
   double ptc_shift_ = 1.0;  // continuation: 1/h^2, the implicit-Euler shift, units of diag|H|

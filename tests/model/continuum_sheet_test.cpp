@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 
 #include "membra/model/forces.hpp"
 #include "membra/model/membrane.hpp"
+#include "membra/model/sheet.hpp"
 
 namespace membra {
 namespace {
@@ -34,6 +36,16 @@ TEST(ContinuumSheet, TheMeshFollowsTheFeaturesAndReportsItself) {
   EXPECT_NEAR(mass, 0.1 * 0.08 * sheet.material.thickness * sheet.material.density, 1e-15);
   EXPECT_EQ(sheet.model.shell_triangles.size(), m.triangles);  // a plate on every triangle
   EXPECT_DOUBLE_EQ(sheet.grid.width(), 0.1);
+}
+
+// Newton's saddle escape: the sheet's larger side on the continuum (its graded edges say nothing
+// of the buckling scale), the springs' mean length on the lattice (its springs are 10 mm and
+// 10 sqrt 2 mm here, straight and diagonal).
+TEST(ContinuumSheet, TheSaddleEscapeIsTheSheetsSizeOnTheLatticeASpring) {
+  EXPECT_NEAR(saddle_escape_length(build_continuum_sheet(spec()).model), 0.1, 1e-12);
+  const Model lattice = build_sheet({0.1, 0.1, 11, 11}, SheetOptions{}).model;
+  EXPECT_GT(saddle_escape_length(lattice), 0.01);
+  EXPECT_LT(saddle_escape_length(lattice), 0.01 * std::sqrt(2.0));
 }
 
 TEST(ContinuumSheet, TheRimIsTheOutlineWithOutwardNormals) {

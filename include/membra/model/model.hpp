@@ -70,10 +70,11 @@ struct Model {
   int add_particle(double m, const Vec3& x);
 };
 
-// The model's length scale (m): the mean rest length of the sets that have rest lengths (the
-// springs, lattice and added), else the mean edge of the sets with natural metrics (the
-// continuum's triangles), else 1.
-double mean_rest_length(const Model& model);
+// How far Newton's step along negative curvature may move a particle (m): on a lattice, the mean
+// rest length of the springs (as the lattice's examples were validated with); on a continuum
+// sheet (no springs), the sheet's larger side, because its graded elements say nothing of the
+// scale a sheet buckles at (docs/solver.md, "Escaping saddles"). 1 for a model of neither.
+double saddle_escape_length(const Model& model);
 
 struct State {
   Points x;           // positions, m

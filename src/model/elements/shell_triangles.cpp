@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 
+#include "membra/core/second_order.hpp"
 #include "membra/model/elements/membrane_triangles.hpp"
 #include "membra/model/material.hpp"
 #include "membra/model/pattern.hpp"
@@ -21,11 +22,9 @@ static_assert(ElementSet<ShellTriangles>);
 namespace {
 
 template <typename T>
-using V3 = Eigen::Matrix<T, 3, 1>;
-template <typename T>
 using M2 = Eigen::Matrix<T, 2, 2>;
 using Grad = Eigen::AutoDiffScalar<Eigen::Matrix<double, 12, 1>>;
-using Hess = Eigen::AutoDiffScalar<Eigen::Matrix<Grad, 12, 1>>;
+using Jet = SecondOrder<9>;
 
 // The plates' bilinear form: sum over layers of A (D/2) [nu tr(Ma) tr(Mb) + (1 - nu) tr(Ma Mb)],
 // M = G^-1 X; the energy is Q(II, II).
@@ -45,20 +44,63 @@ double plate_form(const std::array<const PlateLayer*, 2>& layers, const Eigen::M
 // move a well-posed fit by well under 1 %, large enough to bound a degenerate one.
 constexpr double kPrior = 1e-3;
 
+// A 3-vector of any scalar (double, first- or second-order duals) with the few operations the
+// curvature scalars need.
+template <typename T>
+struct P3 {
+  T x, y, z;
+  T& operator[](int i) { return i == 0 ? x : i == 1 ? y : z; }
+};
+template <typename T>
+P3<T> operator-(const P3<T>& a, const P3<T>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <typename T>
+P3<T> operator+(const P3<T>& a, const P3<T>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <typename T>
+P3<T> scaled(const P3<T>& a, const T& s) {
+  return {a.x * s, a.y * s, a.z * s};
+}
+template <typename T>
+T dot(const P3<T>& a, const P3<T>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <typename T>
+P3<T> cross(const P3<T>& a, const P3<T>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+double value_of(double a) {
+  return a;
+}
+double value_of(const Grad& a) {
+  return a.value();
+}
+double value_of(const Jet& a) {
+  return a.v;
+}
+
 // The six geometric scalars a triangle's curvature is read from, each of its three corners and
 // one far corner p3 (edge k lies opposite corner k): m < 3, the far corner's height over the
 // face's plane; m >= 3, the mid-edge reading of edge k = m - 3, s_k = (x_{k+1} + x_{k+2} - 2 x_k)
 // . m_k / |m_k|, m_k the mean of the face's and the neighbour's (x_{k+2}, x_{k+1}, p3) normals.
 template <typename T>
-T geometric(int m, const std::array<V3<T>, 4>& p) {
-  const V3<T> n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
-  if (m < 3) return (p[3] - p[0]).dot(n);
+T geometric(int m, const std::array<P3<T>, 4>& p) {
+  using std::sqrt;
+  const P3<T> c = cross(p[1] - p[0], p[2] - p[0]);
+  const T c_norm = sqrt(dot(c, c));
+  if (m < 3) return dot(p[3] - p[0], c) / c_norm;
   const auto k = static_cast<size_t>(m - 3);
-  const V3<T>&a = p[(k + 1) % 3], &b = p[(k + 2) % 3];
-  const V3<T> mk = n + (a - b).cross(p[3] - b).normalized();
+  const P3<T>&a = p[(k + 1) % 3], &b = p[(k + 2) % 3];
+  const P3<T> c2 = cross(a - b, p[3] - b);
+  const T inv_c = T(1.0) / c_norm, inv_c2 = T(1.0) / T(sqrt(dot(c2, c2)));
+  const P3<T> mk = scaled(c, inv_c) + scaled(c2, inv_c2);
+  const T mk2 = dot(mk, mk);
   // A neighbour folded flat onto the face has no mean normal: no reading (its weight is small).
-  if (mk.squaredNorm() < T(1e-12)) return T(0.0);
-  return (a + b - p[k] * T(2.0)).dot(mk) / mk.norm();
+  if (value_of(mk2) < 1e-12) return T(0.0);
+  const P3<T> twice{p[k].x * T(2.0), p[k].y * T(2.0), p[k].z * T(2.0)};
+  return dot(a + b - twice, mk) / sqrt(mk2);
 }
 
 // The stencil position (0..17) of local coordinate c (0..11) of scalar m's four points.
@@ -223,7 +265,11 @@ double ShellTriangles::energy(int i, const Points& x) const {
   Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
   for (int m = 0; m < 6; ++m) {
     if (pl.free[static_cast<size_t>(m % 3)]) continue;
-    const std::array<V3<double>, 4> q{x.col(p[0]), x.col(p[1]), x.col(p[2]), x.col(p[3 + m % 3])};
+    std::array<P3<double>, 4> q;
+    for (size_t j = 0; j < 4; ++j) {
+      const auto col = x.col(j < 3 ? p[j] : p[3 + static_cast<size_t>(m % 3)]);
+      q[j] = {col.x(), col.y(), col.z()};
+    }
     g[m] = geometric(m, q);
   }
   const Eigen::Vector3d h = pl.map * g;
@@ -231,7 +277,7 @@ double ShellTriangles::energy(int i, const Points& x) const {
 }
 
 // The scalars' values and gradients (6 x 18), and with `second` each one's Hessian (12 x 12 over
-// its four points), by dual numbers over 12 coordinates.
+// its four points), by first- or second-order dual numbers over 12 coordinates.
 struct ShellScalars {
   Eigen::Matrix<double, 6, 1> value = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix<double, 6, 18> gradient = Eigen::Matrix<double, 6, 18>::Zero();
@@ -245,7 +291,7 @@ void ShellTriangles::scalars(int i, const Points& x, const Plan& pl, bool second
     if (pl.free[static_cast<size_t>(m % 3)]) continue;
     const std::array<int, 4> pts{p[0], p[1], p[2], p[3 + m % 3]};
     if (!second) {
-      std::array<V3<Grad>, 4> q;
+      std::array<P3<Grad>, 4> q;
       for (int c = 0; c < 12; ++c)
         q[static_cast<size_t>(c / 3)][c % 3] =
             Grad(x(c % 3, pts[static_cast<size_t>(c / 3)]), 12, c);
@@ -254,19 +300,25 @@ void ShellTriangles::scalars(int i, const Points& x, const Plan& pl, bool second
       for (int c = 0; c < 12; ++c) out.gradient(m, stencil_dof(m, c)) += g.derivatives()[c];
       continue;
     }
-    std::array<V3<Hess>, 4> q;
-    for (int c = 0; c < 12; ++c) {
-      Hess& h = q[static_cast<size_t>(c / 3)][c % 3];
-      h.value() = Grad(x(c % 3, pts[static_cast<size_t>(c / 3)]), 12, c);
-      h.derivatives() = Eigen::Matrix<Grad, 12, 1>::Constant(Grad(0.0));
-      h.derivatives()[c] = Grad(1.0);
-    }
-    const Hess g = geometric(m, q);
-    out.value[m] = g.value().value();
-    for (int c = 0; c < 12; ++c) {
-      out.gradient(m, stencil_dof(m, c)) += g.value().derivatives()[c];
-      out.hessian[static_cast<size_t>(m)].row(c) = g.derivatives()[c].derivatives().transpose();
-    }
+    // The scalars depend on differences only: differentiate over p1 - p0, p2 - p0, p3 - p0 (9
+    // variables, not 12) and map back with d = L x.
+    std::array<P3<Jet>, 4> q{P3<Jet>{Jet(0.0), Jet(0.0), Jet(0.0)}};
+    for (int c = 0; c < 9; ++c)
+      q[static_cast<size_t>(1 + c / 3)][c % 3] =
+          Jet::variable(x(c % 3, pts[static_cast<size_t>(1 + c / 3)]) - x(c % 3, pts[0]), c);
+    const Jet g = geometric(m, q);
+    static const Eigen::Matrix<double, 9, 12> diff = [] {
+      Eigen::Matrix<double, 9, 12> l = Eigen::Matrix<double, 9, 12>::Zero();
+      for (int j = 0; j < 3; ++j) {
+        l.block<3, 3>(3 * j, 0) = -Eigen::Matrix3d::Identity();
+        l.block<3, 3>(3 * j, 3 * (j + 1)) = Eigen::Matrix3d::Identity();
+      }
+      return l;
+    }();
+    out.value[m] = g.v;
+    const Eigen::Matrix<double, 12, 1> grad = diff.transpose() * g.g;
+    for (int c = 0; c < 12; ++c) out.gradient(m, stencil_dof(m, c)) += grad[c];
+    out.hessian[static_cast<size_t>(m)] = diff.transpose() * g.h * diff;
   }
 }
 
