@@ -1,5 +1,7 @@
 #include "membra/geometry/triangulation.hpp"
 
+#include <algorithm>
+
 namespace membra {
 
 std::vector<Triangle> triangulate(const GridSheet& sheet) {
@@ -19,6 +21,31 @@ std::vector<Triangle> triangulate(const GridSheet& sheet) {
     }
   }
   return tris;
+}
+
+Points vertex_normals(const Points& x, const std::vector<Triangle>& triangles) {
+  Points n = Points::Zero(3, x.cols());
+  for (const Triangle& t : triangles) {
+    const Vec3 a = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
+    for (int k = 0; k < 3; ++k) n.col(t[k]) += a;
+  }
+  for (Eigen::Index p = 0; p < n.cols(); ++p) {
+    const double len = n.col(p).norm();
+    n.col(p) = len > 0.0 ? Vec3(n.col(p) / len) : Vec3::UnitZ();
+  }
+  return n;
+}
+
+std::vector<Vec2> flat_uv(const Points& flat) {
+  std::vector<Vec2> uv;
+  if (flat.cols() == 0) return uv;
+  const Vec2 lo = flat.topRows<2>().rowwise().minCoeff();
+  const Vec2 extent = flat.topRows<2>().rowwise().maxCoeff() - lo;
+  const double side = std::max(extent.maxCoeff(), 1e-300);
+  uv.reserve(static_cast<size_t>(flat.cols()));
+  for (Eigen::Index p = 0; p < flat.cols(); ++p)
+    uv.emplace_back((flat.col(p).head<2>() - lo) / side);
+  return uv;
 }
 
 }  // namespace membra

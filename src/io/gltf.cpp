@@ -8,9 +8,11 @@
 
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
+#include "membra/geometry/triangulation.hpp"
 #include "membra/version.hpp"
 
 namespace membra {
@@ -96,14 +98,9 @@ Vec3 from_y_up(const Vec3& v) {
 // Positions in metres (glTF's unit) and smooth (area-weighted) normals, as float triples in
 // glTF's axes.
 void vertex_arrays(const GlbSheet& s, std::vector<float>& pos, std::vector<float>& nrm) {
-  Points normals = Points::Zero(3, s.x.cols());
-  for (const Triangle& t : s.triangles) {
-    const Vec3 n = (s.x.col(t[1]) - s.x.col(t[0])).cross(s.x.col(t[2]) - s.x.col(t[0]));
-    for (int k = 0; k < 3; ++k) normals.col(t[k]) += n;
-  }
+  const Points normals = vertex_normals(s.x, s.triangles);
   for (Eigen::Index p = 0; p < s.x.cols(); ++p) {
-    const Vec3 n = normals.col(p).norm() > 0 ? Vec3(normals.col(p).normalized()) : Vec3::UnitZ();
-    const Vec3 q = to_y_up(s.x.col(p)), m = to_y_up(n);
+    const Vec3 q = to_y_up(s.x.col(p)), m = to_y_up(normals.col(p));
     for (int k = 0; k < 3; ++k) {
       pos.push_back(static_cast<float>(q[k]));
       nrm.push_back(static_cast<float>(m[k]));
@@ -122,8 +119,8 @@ float linear_to_srgb(float c) {
 
 namespace {
 
-// The sheet's one primitive: its attributes and indices appended to m's buffer.
-tinygltf::Primitive sheet_primitive(tinygltf::Model& m, const GlbSheet& s) {
+// The sheet's vertex attributes, appended to m's buffer, as a primitive without indices.
+tinygltf::Primitive sheet_attributes(tinygltf::Model& m, const GlbSheet& s) {
   const auto n = static_cast<size_t>(s.x.cols());
   std::vector<float> pos, nrm;
   vertex_arrays(s, pos, nrm);
@@ -140,6 +137,14 @@ tinygltf::Primitive sheet_primitive(tinygltf::Model& m, const GlbSheet& s) {
     p_acc.maxValues[i % 3] = std::max(p_acc.maxValues[i % 3], double(pos[i]));
   }
   prim.attributes["NORMAL"] = add_accessor(m, nrm, f32, vec3, n, array);
+  if (!s.uv.empty()) {
+    std::vector<float> uv;
+    for (const Vec2& t : s.uv) {
+      uv.push_back(static_cast<float>(t.x()));
+      uv.push_back(static_cast<float>(1.0 - t.y()));  // glTF counts v from the top
+    }
+    prim.attributes["TEXCOORD_0"] = add_accessor(m, uv, f32, TINYGLTF_TYPE_VEC2, n, array);
+  }
   prim.attributes["COLOR_0"] =
       add_accessor(m, linear_colors(s.curvature_colors), f32, vec3, n, array);
   prim.attributes["COLOR_1"] = add_accessor(m, linear_colors(s.stress_colors), f32, vec3, n, array);
@@ -147,13 +152,42 @@ tinygltf::Primitive sheet_primitive(tinygltf::Model& m, const GlbSheet& s) {
       st(s.stress.begin(), s.stress.end());
   prim.attributes["_CURVATURE"] = add_accessor(m, k, f32, TINYGLTF_TYPE_SCALAR, n, array);
   prim.attributes["_STRESS"] = add_accessor(m, st, f32, TINYGLTF_TYPE_SCALAR, n, array);
-  std::vector<std::uint32_t> idx;
-  for (const Triangle& t : s.triangles)
-    for (int c : t) idx.push_back(static_cast<std::uint32_t>(c));
-  prim.indices = add_accessor(m, idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                              idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-  prim.material = 0;
   return prim;
+}
+
+// The two materials: white (the vertex colours show as they are), the latex matte, the resin
+// glossy, so that an importer can tell and re-dress them by name.
+void add_materials(tinygltf::Model& m) {
+  for (const auto& [name, roughness] : {std::pair{"latex", 0.8}, std::pair{"resin", 0.3}}) {
+    tinygltf::Material mat;
+    mat.name = name;
+    mat.doubleSided = true;  // a sheet: both faces are seen
+    mat.pbrMetallicRoughness.metallicFactor = 0.0;
+    mat.pbrMetallicRoughness.roughnessFactor = roughness;
+    m.materials.push_back(mat);
+  }
+}
+
+// One primitive per material that has triangles (material 0 latex, 1 resin), sharing `base`'s
+// attributes.
+std::vector<tinygltf::Primitive> material_primitives(tinygltf::Model& m, const GlbSheet& s,
+                                                     const tinygltf::Primitive& base) {
+  std::vector<tinygltf::Primitive> out;
+  for (int material = 0; material < 2; ++material) {
+    std::vector<std::uint32_t> idx;
+    for (size_t t = 0; t < s.triangles.size(); ++t) {
+      const bool resin = !s.resin.empty() && s.resin[t];
+      if (resin != (material == 1)) continue;
+      for (int c : s.triangles[t]) idx.push_back(static_cast<std::uint32_t>(c));
+    }
+    if (idx.empty()) continue;
+    tinygltf::Primitive prim = base;
+    prim.indices = add_accessor(m, idx, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
+                                idx.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    prim.material = material;
+    out.push_back(prim);
+  }
+  return out;
 }
 
 }  // namespace
@@ -161,20 +195,16 @@ tinygltf::Primitive sheet_primitive(tinygltf::Model& m, const GlbSheet& s) {
 void write_glb(std::ostream& out, const GlbSheet& s) {
   const auto n = static_cast<size_t>(s.x.cols());
   if (s.curvature_colors.size() != n || s.stress_colors.size() != n || s.curvature.size() != n ||
-      s.stress.size() != n)
-    throw InputError("final.glb", "colours or values do not match the vertices");
+      s.stress.size() != n || (!s.uv.empty() && s.uv.size() != n) ||
+      (!s.resin.empty() && s.resin.size() != s.triangles.size()))
+    throw InputError("final.glb", "colours, values or materials do not match the mesh");
   tinygltf::Model m;
   m.buffers.resize(1);
-  const tinygltf::Primitive prim = sheet_primitive(m, s);
-  tinygltf::Material mat;
-  mat.name = "membrane";
-  mat.doubleSided = true;  // a sheet: both faces are seen
-  mat.pbrMetallicRoughness.metallicFactor = 0.0;
-  mat.pbrMetallicRoughness.roughnessFactor = 0.8;
-  m.materials.push_back(mat);
+  const tinygltf::Primitive base = sheet_attributes(m, s);
+  add_materials(m);
   tinygltf::Mesh mesh;
   mesh.name = "membrane";
-  mesh.primitives.push_back(prim);
+  mesh.primitives = material_primitives(m, s, base);
   m.meshes.push_back(mesh);
   tinygltf::Node node;
   node.mesh = 0;
@@ -189,6 +219,7 @@ void write_glb(std::ostream& out, const GlbSheet& s) {
   extras["unit"] = "m";
   extras["up"] = "membra's z is glTF's y: positions are (x, z, -y) of membra's";
   extras["attributes"] = {
+      {"TEXCOORD_0", "the flat (natural) sheet, its larger side 0 to 1"},
       {"COLOR_0", "Gaussian curvature colours"},
       {"COLOR_1", "stress colours"},
       {"_CURVATURE", "Gaussian curvature, 1/mm^2"},
@@ -271,13 +302,24 @@ GlbSheet read_glb(const std::filesystem::path& file) {
   s.stress_colors = srgb_colors(read_floats(m, prim, "COLOR_1", 3, where));
   for (float v : read_floats(m, prim, "_CURVATURE", 1, where)) s.curvature.push_back(v);
   for (float v : read_floats(m, prim, "_STRESS", 1, where)) s.stress.push_back(v);
-  const std::vector<std::uint32_t> idx = read_indices(m, prim, where);
-  for (std::uint32_t i : idx)
-    if (i >= static_cast<std::uint32_t>(s.x.cols()))
-      throw InputError(where, "an index is out of range");
-  for (size_t i = 0; i + 2 < idx.size(); i += 3)
-    s.triangles.emplace_back(static_cast<int>(idx[i]), static_cast<int>(idx[i + 1]),
-                             static_cast<int>(idx[i + 2]));
+  if (prim.attributes.count("TEXCOORD_0")) {
+    const auto uv = read_floats(m, prim, "TEXCOORD_0", 2, where);
+    for (size_t i = 0; i + 1 < uv.size(); i += 2) s.uv.emplace_back(uv[i], 1.0 - uv[i + 1]);
+  }
+  for (const tinygltf::Primitive& part : m.meshes[0].primitives) {
+    const bool resin = part.material >= 0 &&
+                       static_cast<size_t>(part.material) < m.materials.size() &&
+                       m.materials[static_cast<size_t>(part.material)].name == "resin";
+    const std::vector<std::uint32_t> idx = read_indices(m, part, where);
+    for (std::uint32_t i : idx)
+      if (i >= static_cast<std::uint32_t>(s.x.cols()))
+        throw InputError(where, "an index is out of range");
+    for (size_t i = 0; i + 2 < idx.size(); i += 3) {
+      s.triangles.emplace_back(static_cast<int>(idx[i]), static_cast<int>(idx[i + 1]),
+                               static_cast<int>(idx[i + 2]));
+      s.resin.push_back(resin);
+    }
+  }
   s.extras = to_json(m.asset.extras);
   return s;
 }

@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 #include "membra/core/input_error.hpp"
 #include "membra/core/units.hpp"
+#include "membra/geometry/triangulation.hpp"
 
 namespace membra {
 
@@ -20,6 +22,50 @@ void write_obj(std::ostream& out, const Points& x, const std::vector<Triangle>& 
   }
   for (const Triangle& t : triangles)
     out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+}
+
+void write_obj(std::ostream& out, const Points& x, const std::vector<Triangle>& triangles,
+               const ObjLayers& layers) {
+  const auto n = static_cast<size_t>(x.cols());
+  if (layers.uv.size() != n || layers.resin.size() != triangles.size())
+    throw std::invalid_argument("write_obj: texture coordinates or materials do not match");
+  out << "# membra mesh; units: mm; vt: the flat sheet\n";
+  if (!layers.mtllib.empty()) out << "mtllib " << layers.mtllib << '\n';
+  char line[128];
+  for (Eigen::Index p = 0; p < x.cols(); ++p) {
+    const Vec3 q = x.col(p) / units::mm;
+    std::snprintf(line, sizeof line, "v %.10g %.10g %.10g\n", q.x(), q.y(), q.z());
+    out << line;
+  }
+  const Points normals = vertex_normals(x, triangles);
+  for (Eigen::Index p = 0; p < x.cols(); ++p) {
+    const Vec3 m = normals.col(p);
+    std::snprintf(line, sizeof line, "vn %.6f %.6f %.6f\n", m.x(), m.y(), m.z());
+    out << line;
+  }
+  for (const Vec2& t : layers.uv) {
+    std::snprintf(line, sizeof line, "vt %.8f %.8f\n", t.x(), t.y());
+    out << line;
+  }
+  for (const bool resin : {false, true}) {
+    const char* name = resin ? "resin" : "latex";
+    out << "g " << name << "\nusemtl " << name << '\n';
+    for (size_t k = 0; k < triangles.size(); ++k) {
+      if (layers.resin[k] != resin) continue;
+      out << 'f';
+      for (int c = 0; c < 3; ++c) {
+        const int i = triangles[k][c] + 1;
+        out << ' ' << i << '/' << i << '/' << i;
+      }
+      out << '\n';
+    }
+  }
+}
+
+void write_mtl(std::ostream& out) {
+  out << "# membra materials\n"
+         "newmtl latex\nKd 0.93 0.84 0.62\nKa 0 0 0\nKs 0.05 0.05 0.05\nNs 10\nd 1\nillum 2\n\n"
+         "newmtl resin\nKd 0.13 0.38 0.75\nKa 0 0 0\nKs 0.5 0.5 0.5\nNs 80\nd 0.9\nillum 2\n";
 }
 
 namespace {

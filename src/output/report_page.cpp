@@ -199,11 +199,14 @@ const char* kViewScript = R"(
   new THREE.GLTFLoader().parse(bytes.buffer, '', function (gltf) {
     const root = gltf.scene;
     scene.add(root);
-    let mesh = null;
-    root.traverse(function (o) { if (o.isMesh) mesh = o; });
-    if (!mesh) { fail('final.glb holds no mesh'); return; }
-    const colours = [mesh.geometry.getAttribute('color'), mesh.geometry.getAttribute('color_1')];
-    mesh.material.side = THREE.DoubleSide;
+    // One mesh per material (latex, resin), each with both colourings.
+    const meshes = [];
+    root.traverse(function (o) { if (o.isMesh) meshes.push(o); });
+    if (!meshes.length) { fail('final.glb holds no mesh'); return; }
+    const colours = meshes.map(function (m) {
+      m.material.side = THREE.DoubleSide;
+      return [m.geometry.getAttribute('color'), m.geometry.getAttribute('color_1')];
+    });
     root.updateMatrixWorld(true);
     const sphere = new THREE.Box3().setFromObject(root).getBoundingSphere(new THREE.Sphere());
     function home() {
@@ -223,7 +226,9 @@ const char* kViewScript = R"(
     document.querySelectorAll('input[name=colour]').forEach(function (input) {
       input.onchange = function () {
         const i = Number(input.value);
-        if (colours[i]) mesh.geometry.setAttribute('color', colours[i]);
+        meshes.forEach(function (m, k) {
+          if (colours[k][i]) m.geometry.setAttribute('color', colours[k][i]);
+        });
         document.querySelectorAll('.scale').forEach(function (s) {
           s.hidden = s.dataset.scale !== input.value;
         });

@@ -5,6 +5,7 @@
 #include "membra/io/obj.hpp"
 #include "membra/io/ply.hpp"
 #include "membra/io/stencil.hpp"
+#include "membra/model/triangle_resin.hpp"
 
 namespace membra {
 
@@ -12,14 +13,19 @@ void stage_run_files(const Scene& scene, const RunResult& r, const RunStaging& s
   const auto& mesh = r.prepared.membrane.sheet;
   const auto& x = r.prepared.membrane.state.x;
   const RunColors& c = s.colors;
-  out.add("final.obj", [&](std::ostream& os) { write_obj(os, x, mesh.triangles); });
+  const std::vector<bool> resin = triangle_resin(mesh);
+  const std::vector<Vec2> uv = flat_uv(mesh.model.reference);
+  out.add("final.obj", [&](std::ostream& os) {
+    write_obj(os, x, mesh.triangles, ObjLayers{uv, resin, "final.mtl"});
+  });
+  out.add("final.mtl", [&](std::ostream& os) { write_mtl(os); });
   out.add("final.ply", [&](std::ostream& os) {
     write_ply(os, x, mesh.triangles, s.curvature_rgb,
               {{"gaussian_curvature", c.curvature}, {"stress", c.stress}});
   });
   out.add("final.glb", [&](std::ostream& os) {
-    GlbSheet g{x,           mesh.triangles, s.curvature_rgb,         s.stress_rgb,
-               c.curvature, c.stress,       nlohmann::json::object()};
+    GlbSheet g{x,  mesh.triangles, s.curvature_rgb, s.stress_rgb, c.curvature, c.stress, {},
+               uv, resin};
     g.extras["name"] = scene.name;
     g.extras["curvature_range"] = {c.k_lo, c.k_hi};  // 1/mm^2, the colours' ends
     g.extras["stress_range"] = {c.s_lo, c.s_hi};     // MPa
@@ -27,10 +33,6 @@ void stage_run_files(const Scene& scene, const RunResult& r, const RunStaging& s
   });
   // The continuum sheet's mesh on the natural sheet, its resin triangles filled.
   if (mesh.continuum()) {
-    const MembraneTriangles& mt = mesh.model.membrane_triangles;
-    std::vector<bool> resin(static_cast<size_t>(mt.size()));
-    for (int i = 0; i < mt.size(); ++i)
-      resin[static_cast<size_t>(i)] = mt.resin[static_cast<size_t>(i)].volume > 0.0;
     out.add("mesh.svg", [&](std::ostream& os) {
       write_mesh_svg(os, mesh.model.reference, mesh.triangles, resin, mesh.grid.width(),
                      mesh.grid.height());

@@ -172,17 +172,12 @@ GlPainter::~GlPainter() {
 void GlPainter::mesh(const Points& x, const std::vector<Triangle>& tris,
                      const std::vector<Rgb>& colors, const Eigen::Matrix4f& vp,
                      const Eigen::Matrix3f& rot) {
-  // Smooth normals (area-weighted).
-  Points normals = Points::Zero(3, x.cols());
-  for (const Triangle& t : tris) {
-    const Vec3 n = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
-    for (int k = 0; k < 3; ++k) normals.col(t[k]) += n;
-  }
+  const Points normals = vertex_normals(x, tris);
   std::vector<Vertex> verts;
   verts.reserve(tris.size() * 3);
   for (const Triangle& t : tris)
     for (int k = 0; k < 3; ++k) {
-      const Vec3 p = x.col(t[k]), n = normals.col(t[k]).normalized();
+      const Vec3 p = x.col(t[k]), n = normals.col(t[k]);
       const Rgb& c = colors[t[k]];
       verts.push_back({{float(p.x()), float(p.y()), float(p.z())},
                        {float(n.x()), float(n.y()), float(n.z())},

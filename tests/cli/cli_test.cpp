@@ -1,4 +1,5 @@
 // The membra command line, run as a user would run it.
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +12,7 @@
 
 #include "test_util.hpp"
 
+#include "membra/io/gltf.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/output/report.hpp"
 #include "membra/process/run.hpp"
@@ -105,15 +107,30 @@ TEST_F(Cli, RunWritesAReportThatMatchesTheLibrary) {
   for (const char* key :
        {"residual", "energy", "shape.height", "wall_seconds", "curvature.total", "stress.max"})
     EXPECT_TRUE(report["units"].contains(key)) << key;
-  // OBJ: 121 vertices and 200 triangles.
+  // OBJ: 121 vertices with their normals and flat-sheet coordinates, 200 triangles, all latex.
   std::ifstream obj(out / "final.obj");
-  int v = 0, f = 0;
+  int v = 0, f = 0, vn = 0, vt = 0;
+  std::string text;
   for (std::string line; std::getline(obj, line);) {
     v += line.rfind("v ", 0) == 0;
+    vn += line.rfind("vn ", 0) == 0;
+    vt += line.rfind("vt ", 0) == 0;
     f += line.rfind("f ", 0) == 0;
+    text += line + "\n";
   }
   EXPECT_EQ(v, 121);
+  EXPECT_EQ(vn, 121);
+  EXPECT_EQ(vt, 121);
   EXPECT_EQ(f, 200);
+  EXPECT_NE(text.find("mtllib final.mtl\n"), std::string::npos);
+  EXPECT_NE(text.find("g latex\nusemtl latex\nf "), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "final.mtl"));
+  // glTF: metres (a 100 mm sheet), the latex's material on every triangle.
+  const GlbSheet glb = read_glb(out / "final.glb");
+  EXPECT_LT(glb.x.cwiseAbs().maxCoeff(), 1.0);
+  EXPECT_GT(glb.x.cwiseAbs().maxCoeff(), 0.01);
+  ASSERT_EQ(glb.resin.size(), 200u);
+  EXPECT_EQ(std::count(glb.resin.begin(), glb.resin.end(), true), 0);
 }
 
 TEST_F(Cli, DynamicRunWritesFramesAndAContactSheet) {

@@ -1,9 +1,11 @@
 #pragma once
-// Triangles of a grid sheet, for drawing and measuring.
+// Triangles of a sheet, for drawing and measuring, and what drawing them needs: smooth normals
+// and the flat sheet as texture coordinates.
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "membra/core/vec.hpp"
 #include "membra/geometry/grid_sheet.hpp"
 
 namespace membra {
@@ -13,5 +15,14 @@ using Triangle = Eigen::Vector3i;  // particle indices, counter-clockwise seen f
 // Splits every active cell into two triangles. The diagonal alternates with the parity of
 // (i + j) so that the mesh has no preferred direction (a single diagonal would bias measures).
 std::vector<Triangle> triangulate(const GridSheet& sheet);
+
+// Unit vertex normals, the area-weighted mean of the triangles' around each vertex (+z where a
+// vertex has none, or they cancel).
+Points vertex_normals(const Points& x, const std::vector<Triangle>& triangles);
+
+// Texture coordinates of the flat sheet: (x, y) of `flat` less its lower-left corner, over its
+// larger side, so the sheet fills [0, 1] along that side and keeps its proportions (origin at the
+// lower left, v upwards, as OBJ counts them).
+std::vector<Vec2> flat_uv(const Points& flat);
 
 }  // namespace membra

@@ -15,6 +15,22 @@ namespace membra {
 // bytes.
 void write_obj(std::ostream& out, const Points& x, const std::vector<Triangle>& triangles);
 
+// What a form's OBJ carries besides its triangles: the flat sheet as texture coordinates (per
+// vertex, flat_uv), which triangles are resin, and the material library the groups name.
+struct ObjLayers {
+  std::vector<Vec2> uv;
+  std::vector<bool> resin;  // per triangle
+  std::string mtllib;       // e.g. "final.mtl"
+};
+// The form with smooth normals (vn), texture coordinates (vt) and its triangles in two groups,
+// `g latex` and `g resin`, each with `usemtl` of the same name from `layers.mtllib`. Throws
+// std::invalid_argument when the layers' sizes disagree with the mesh.
+void write_obj(std::ostream& out, const Points& x, const std::vector<Triangle>& triangles,
+               const ObjLayers& layers);
+// The material library for it: latex (a pale amber) and resin (a translucent blue, as the
+// stencil draws it).
+void write_mtl(std::ostream& out);
+
 struct ObjMesh {
   Points x;  // m (the file's numbers are read as mm)
   std::vector<Triangle> triangles;
