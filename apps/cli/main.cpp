@@ -15,6 +15,7 @@
 #include "membra/io/scene.hpp"
 #include "membra/model/continuum_sheet.hpp"
 #include "membra/output/output_set.hpp"
+#include "membra/process/grid_resolution.hpp"
 #include "membra/process/multilevel.hpp"
 #include "membra/process/run.hpp"
 #include "membra/process/summary.hpp"
@@ -71,6 +72,8 @@ int cmd_validate(const std::string& scene_file, const std::vector<std::string>& 
     else if (!quiet)
       std::cout << scene_file << ": valid (" << sheet.model.num_particles() << " particles, "
                 << sheet.model.springs.size() << " springs, " << p.pinned << " pinned)\n";
+    if (const auto coarse = membra::coarse_grid(scene))
+      std::cerr << "membra: warning: " << scene_file << ": " << coarse->message << "\n";
   } catch (const membra::InputError& e) {
     throw membra::InputError(scene_file + ": " + e.where(), e.detail());
   }
@@ -126,6 +129,8 @@ int cmd_run(const std::string& scene_file, const std::vector<std::string>& sets,
   if (r.curvature_map && !r.curvature_map->message.empty())
     std::cerr << "membra: warning: " << scene_file << ": " << r.curvature_map->step << ": "
               << r.curvature_map->message << "\n";
+  for (const std::string& w : r.warnings)
+    std::cerr << "membra: warning: " << scene_file << ": " << w << "\n";
   const std::string& render_note = staged.render_note;
   if (!render_note.empty()) std::cerr << "membra: warning: no PNG renders: " << render_note << "\n";
   out.commit();

@@ -133,6 +133,8 @@ int run_view(const ViewArgs& args) {
       script = parse_view_script(in, args.script);  // all checked before a window opens
     }
     ViewerSession session(std::move(scene));
+    if (!session.grid_warning().empty())
+      std::cerr << "membra view: warning: " << session.grid_warning() << "\n";
     ViewSettings settings;
     if (args.size.size() != 2 || args.size[0] < 400 || args.size[1] < 300 || args.size[0] > 8192 ||
         args.size[1] > 8192)

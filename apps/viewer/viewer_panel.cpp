@@ -50,6 +50,11 @@ void ViewerWindow::Impl::panel_status(const ViewerSession& s) {
     ImGui::Text("settled");
   else
     ImGui::Text("moving: residual %.2e", s.last_slice().residual_relative);
+  if (!s.grid_warning().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.2f, 1.0f));
+    ImGui::TextWrapped("warning: %s", s.grid_warning().c_str());
+    ImGui::PopStyleColor();
+  }
 }
 
 // The protocol buttons, play/pause/step and the live mode.

@@ -18,7 +18,7 @@ from .design import DesignResult, design
 from .membrane import Membrane
 from .result import Result
 from .scene import Scene, validate
-from .run import run
+from .run import MembraWarning, run
 from . import sweep_spec
 
 __all__ = [
@@ -32,6 +32,7 @@ __all__ = [
     "DesignResult",
     "SceneError",
     "OutputError",
+    "MembraWarning",
 ]
 
 

@@ -39,6 +39,12 @@ class Result:
         return bool(self.report["converged"])
 
     @property
+    def warnings(self):
+        """Advice before trusting the form (report["warnings"]), e.g. a grid too coarse for the
+        pattern; membra.run also issues each as a Python warning (MembraWarning)."""
+        return list(self._native.warnings)
+
+    @property
     def diverged(self):
         """True when the run blew up: write() then writes report.json only."""
         return bool(self._native.diverged)

@@ -1,8 +1,14 @@
 """Running a scene in one go, as `membra run` does."""
 
+import warnings
+
 from . import _membra
 from .result import Result
 from .scene import as_scene
+
+
+class MembraWarning(UserWarning):
+    """Advice from a run before trusting its form (Result.warnings), e.g. a coarse grid."""
 
 
 def run(scene, out=None, set=None, progress=None):
@@ -16,10 +22,13 @@ def run(scene, out=None, set=None, progress=None):
 
     The solve runs without the GIL (other Python threads go on); Ctrl-C raises
     KeyboardInterrupt within a progress interval. A run that diverges returns a Result with
-    .diverged True (write() then writes report.json only).
+    .diverged True (write() then writes report.json only). Each of Result.warnings (e.g. a
+    grid too coarse for the pattern) is also issued as a membra.MembraWarning.
     """
     s = as_scene(scene, set)
     result = Result(_membra.run(s._native, progress), s)
+    for text in result.warnings:
+        warnings.warn(f"{s.name}: {text}", MembraWarning, stacklevel=2)
     if out is not None:
         result.write(out)
     return result

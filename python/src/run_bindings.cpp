@@ -57,6 +57,7 @@ void bind_result(py::module_& m) {
           "report",
           [](const NativeResult& r) { return json_to_python(make_report(*r.scene, r.run)); })
       .def_property_readonly("diverged", [](const NativeResult& r) { return r.run.solve.diverged; })
+      .def_property_readonly("warnings", [](const NativeResult& r) { return r.run.warnings; })
       .def("write", &write_result, py::arg("dir"), py::arg("curvature_range"),
            py::arg("stress_range"));
 }

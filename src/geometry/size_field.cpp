@@ -52,12 +52,14 @@ SizeField::SizeField(const std::vector<Polyline2>& boundaries, const Vec2& domai
   rasterize(measure(boundaries));
 }
 
-std::vector<SizeField::Source> SizeField::measure(const std::vector<Polyline2>& boundaries) {
-  const std::vector<Segment> segs = segments_of(boundaries);
-  const double eps = 1e-9 * extent_.norm();
-  const double spacing = 0.5 * options_.max_edge;
-  narrowest_.width = std::numeric_limits<double>::infinity();
-  std::vector<Source> sources;
+namespace {
+
+// Calls width(p, w) at samples `spacing` apart along every boundary segment, w the width of the
+// narrower region beside it (a ray along the normal each way to the next boundary); samples
+// that see no boundary on either side are skipped.
+template <typename Width>
+void measure_widths(const std::vector<SizeField::Segment>& segs, double eps, double spacing,
+                    Width&& width) {
   for (size_t k = 0; k < segs.size(); ++k) {
     const Vec2 e = segs[k].b - segs[k].a;
     const double len = e.norm();
@@ -68,11 +70,68 @@ std::vector<SizeField::Source> SizeField::measure(const std::vector<Polyline2>& 
       // The regions on both sides of the boundary: a resin piece and a latex gap.
       const double w =
           std::min(ray_distance(p, normal, segs, k, eps), ray_distance(p, -normal, segs, k, eps));
-      if (!std::isfinite(w)) continue;
-      if (w < narrowest_.width) narrowest_ = {w, p};
-      sources.push_back({p, std::min(options_.max_edge, w / options_.elements_across)});
+      if (std::isfinite(w)) width(p, w);
     }
   }
+}
+
+}  // namespace
+
+NarrowestFeature narrowest_feature(const std::vector<Polyline2>& boundaries, double spacing,
+                                   double min_length) {
+  if (!(spacing > 0.0)) throw std::invalid_argument("narrowest_feature: spacing must be positive");
+  const std::vector<SizeField::Segment> all = segments_of(boundaries);
+  double extent = 0.0;
+  for (const auto& seg : all) extent = std::max({extent, seg.a.norm(), seg.b.norm()});
+  NarrowestFeature out{std::numeric_limits<double>::infinity(), Vec2::Zero()};
+  size_t first = 0;  // segments_of keeps the polygons' order: each one's segments in a run
+  for (const Polyline2& poly : boundaries) {
+    const size_t count = segments_of({poly}).size();
+    struct Sample {
+      double width, length;
+      Vec2 at;
+    };
+    std::vector<Sample> samples;
+    double perimeter = 0.0;
+    for (size_t k = first; k < first + count; ++k) {
+      const double len = (all[k].b - all[k].a).norm();
+      perimeter += len;
+      const int n = std::max(1, static_cast<int>(std::ceil(len / spacing)));
+      const Vec2 e = (all[k].b - all[k].a) / len, normal(-e.y(), e.x());
+      for (int i = 0; i < n; ++i) {
+        const Vec2 p = all[k].a + ((i + 0.5) / n) * len * e;
+        const double w = std::min(ray_distance(p, normal, all, k, 1e-9 * extent),
+                                  ray_distance(p, -normal, all, k, 1e-9 * extent));
+        if (std::isfinite(w)) samples.push_back({w, len / n, p});
+      }
+    }
+    first += count;
+    // The width below which the boundary runs for the length asked: a pinch (a corner near
+    // another boundary, a wedge where a boundary meets the rim) is narrow only along a little of
+    // it, a strip along all of it.
+    std::sort(samples.begin(), samples.end(),
+              [](const Sample& a, const Sample& b) { return a.width < b.width; });
+    const double wanted = std::min(min_length, 0.5 * perimeter);
+    double run = 0.0;
+    for (const Sample& smp : samples) {
+      run += smp.length;
+      if (run < wanted) continue;
+      if (smp.width < out.width) out = {smp.width, smp.at};
+      break;
+    }
+  }
+  return std::isfinite(out.width) ? out : NarrowestFeature{};
+}
+
+std::vector<SizeField::Source> SizeField::measure(const std::vector<Polyline2>& boundaries) {
+  const std::vector<Segment> segs = segments_of(boundaries);
+  narrowest_.width = std::numeric_limits<double>::infinity();
+  std::vector<Source> sources;
+  measure_widths(
+      segs, 1e-9 * extent_.norm(), 0.5 * options_.max_edge, [&](const Vec2& p, double w) {
+        if (w < narrowest_.width) narrowest_ = {w, p};
+        sources.push_back({p, std::min(options_.max_edge, w / options_.elements_across)});
+      });
   if (!std::isfinite(narrowest_.width)) narrowest_ = {0.0, Vec2::Zero()};
   return densify(segs, sources);
 }

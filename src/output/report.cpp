@@ -56,6 +56,7 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
   j["wall_seconds"] = s.wall_seconds;
   j["max_seconds"] = scene.simulation.max_seconds;
   j["out_of_time"] = r.out_of_time;
+  j["warnings"] = r.warnings;
   j["simulated_seconds"] = r.prepared.membrane.state.time;
   j["particles"] = m.num_particles();
   j["springs"] = m.springs.size() + m.added_springs.size();
@@ -216,6 +217,8 @@ json form_units() {
       {"max_seconds", "s (simulation.max_seconds, the run's wall-time budget; 0: none)"},
       {"simulated_seconds", "s"},
       {"model", "text (lattice: the paper's springs on a grid; continuum: the latex-resin shell)"},
+      {"warnings",
+       "text (advice before trusting the form, e.g. a grid too coarse for the pattern)"},
       {"mesh.max_edge", "mm (sheet.mesh.max_edge as made; mesh.elements_across likewise)"},
       {"mesh.min_edge_mm", "mm"},
       {"mesh.mean_edge_mm", "mm"},

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "membra/process/explore.hpp"
+#include "membra/process/grid_resolution.hpp"
 #include "membra/process/multilevel.hpp"
 #include "membra/process/path.hpp"
 #include "membra/process/steps.hpp"
@@ -80,16 +81,29 @@ bool SceneRun::solve() {
       {"solve", solve_scene_step(scene_, r_.prepared, s, "solve", progress_, &recorder_), 0});
 }
 
+namespace {
+
+// The advice a result carries: a grid too coarse for the pattern (grid_resolution.hpp).
+std::vector<std::string> run_warnings(const Scene& scene) {
+  std::vector<std::string> out;
+  if (const auto coarse = coarse_grid(scene)) out.push_back(coarse->message);
+  return out;
+}
+
+}  // namespace
+
 RunResult SceneRun::result() const {
   RunResult r = r_;
   note_budget(scene_, r);
   if (!r.solve.diverged) summarize_run(r, curvature_field_);
+  r.warnings = run_warnings(scene_);
   return r;
 }
 
 RunResult SceneRun::finish() {
   note_budget(scene_, r_);
   if (!r_.solve.diverged) summarize_run(r_, curvature_field_);
+  r_.warnings = run_warnings(scene_);
   return std::move(r_);
 }
 

@@ -9,6 +9,7 @@
 #include "membra/io/scene_writer.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/pins.hpp"
+#include "membra/process/grid_resolution.hpp"
 #include "membra/process/steps.hpp"
 #include "membra/solve/solver.hpp"
 
@@ -51,6 +52,7 @@ ViewerSession::ViewerSession(Scene scene)
   params_.D = scene_.simulation.damping;
   if (const auto* s = first_step<StretchStep>()) params_.lambda = s->lambda;
   if (!scene_.simulation.is_static()) mode_ = LiveMode::dynamics;
+  if (const auto coarse = coarse_grid(scene_)) grid_warning_ = coarse->message;
 }
 
 std::optional<PatternSpec> ViewerSession::resin_pattern_spec() const {

@@ -159,6 +159,12 @@ TEST_F(Cli, ValidateGoodAndBrokenScenes) {
   EXPECT_NE(bad.text.find("--set simulation.D=-2 (on "), std::string::npos) << bad.text;
   EXPECT_NE(bad.text.find("exp1_basic.json): /simulation/D: must be >= 0"), std::string::npos)
       << bad.text;
+  // A grid too coarse for the pattern is valid, with a warning that names a resolution.
+  const Output coarse = membra_cli("validate " + std::string(MEMBRA_SOURCE_DIR) +
+                                   "/examples/exp3_parallel.json --set sheet.resolution=[21,21]");
+  EXPECT_EQ(coarse.code, 0) << coarse.text;
+  EXPECT_NE(coarse.text.find("warning: "), std::string::npos) << coarse.text;
+  EXPECT_NE(coarse.text.find("sheet.resolution [35, 35]"), std::string::npos) << coarse.text;
 }
 
 TEST_F(Cli, BadInputFailsCleanlyAndWritesNothing) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 namespace membra {
 namespace {
 
@@ -29,6 +31,25 @@ TEST(SizeField, AsksForElementsAcrossTheNarrowestPieceAndGrowsAwayFromIt) {
       EXPECT_LE(h(Vec2(x, y)), o.max_edge + 1e-15);
       EXPECT_GE(h(Vec2(x, y)), h.smallest() - 1e-15);
     }
+}
+
+// The narrowest feature that is narrow along a length: the strip (10 mm), and not the 0.5 mm
+// pinch where a square's corner nearly touches another square's side.
+TEST(NarrowestFeature, IsTheStripNotAPinchPoint) {
+  const NarrowestFeature strip = narrowest_feature(strip_in_square(), 0.001, 0.01);
+  EXPECT_NEAR(strip.width, 0.010, 1e-12);
+  EXPECT_NEAR(strip.at.y(), 0.045, 0.0101);  // on the strip's boundary
+  const Polyline2 square = {{0, 0}, {0.1, 0}, {0.1, 0.1}, {0, 0.1}};
+  const Polyline2 a = {{0.02, 0.02}, {0.04, 0.02}, {0.04, 0.04}, {0.02, 0.04}};
+  // b's corner 0.5 mm from a's right side, tilted 45 degrees so only the corner comes close.
+  const double c = 0.0405, m = 0.05;
+  const Polyline2 b = {
+      {c, 0.03}, {c + m / 2, 0.03 - m / 2}, {c + m, 0.03}, {c + m / 2, 0.03 + m / 2}};
+  const NarrowestFeature pinch = narrowest_feature({square, a, b}, 0.0005, 0.01);
+  EXPECT_GT(pinch.width, 5 * 0.0005);
+  // Without the length asked, the pinch is what it finds.
+  EXPECT_LT(narrowest_feature({square, a, b}, 0.0005, 0.0).width, 0.001);
+  EXPECT_THROW(narrowest_feature({square}, 0.0, 0.01), std::invalid_argument);
 }
 
 TEST(SizeField, IsLipschitzAtTheGradingRate) {

@@ -59,6 +59,16 @@ def test_arrays_have_their_shapes_and_units(small_ellipse):
     assert r.converged and not r.diverged
 
 
+def test_a_grid_too_coarse_for_the_pattern_warns(small_ellipse, root):
+    # 13 x 13 nodes: the ellipse's 1.6 mm latex gaps are a fraction of a 16.7 mm spacing.
+    with pytest.warns(membra.MembraWarning, match=r"sheet.resolution: the narrowest"):
+        r = membra.run(small_ellipse)
+    assert r.warnings == r.report["warnings"] and len(r.warnings) == 1
+    # A sheet without a pattern has nothing to resolve.
+    plain = membra.Scene(root / "examples" / "exp1_basic.json", set={"sheet.resolution": [9, 9]})
+    assert membra.run(plain).warnings == []
+
+
 def test_membrane_step_by_step_is_membra_run(small_ellipse):
     whole = membra.run(small_ellipse)
     m = membra.Membrane(small_ellipse)

@@ -25,6 +25,15 @@ struct NarrowestFeature {
   Vec2 at = Vec2::Zero();
 };
 
+// The narrowest region between the closed `boundaries` that is narrow along some length: per
+// boundary, the width below which at least `min_length` of it (at most half its perimeter)
+// lies, measured as SizeField does at samples `spacing` apart; the least of these. A pinch
+// point (a corner close to another boundary, a wedge where a boundary meets the rim) does not
+// count, a strip or a gap along a side does. {0, origin} when no boundary faces another. Throws
+// std::invalid_argument for spacing <= 0.
+NarrowestFeature narrowest_feature(const std::vector<Polyline2>& boundaries, double spacing,
+                                   double min_length);
+
 class SizeField {
  public:
   // `boundaries` are closed polygons (the last vertex joins the first) inside `domain`; a

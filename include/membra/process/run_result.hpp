@@ -83,6 +83,9 @@ struct RunResult {
   // simulation.multilevel: every grid's solve, coarsest first, the scene's own last (whose
   // solve is `solve`); empty when the run used one grid.
   std::vector<GridLevel> levels;
+  // Advice the run's user should see before trusting the form, e.g. a grid too coarse for the
+  // pattern (grid_resolution.hpp); each a sentence naming the scene field.
+  std::vector<std::string> warnings;
   bool out_of_time = false;  // stopped unconverged at simulation.max_seconds
   int explored = 0;          // releases made (0: no exploration)
   int unsettled = 0;         // of them, ended unconverged or at a saddle (in no branch)

@@ -63,6 +63,8 @@ class ViewerSession {
   explicit ViewerSession(Scene scene);
 
   const Scene& scene() const { return scene_; }
+  // "" or why the scene's grid may be too coarse for its pattern (grid_resolution.hpp).
+  const std::string& grid_warning() const { return grid_warning_; }
   const Membrane& membrane() const { return prepared_.membrane; }
   Stage stage() const { return stage_; }
   const LiveParameters& parameters() const { return params_; }
@@ -153,6 +155,7 @@ class ViewerSession {
   std::string impregnate_with(const PatternSpec& pattern, const ImpregnateStep* step);
 
   Scene scene_;
+  std::string grid_warning_;
   PreparedScene prepared_;
   Stage stage_ = Stage::flat;
   LiveParameters params_;
