@@ -13,15 +13,46 @@ Units, as in the scene files and the outputs: lengths in millimetres, Gaussian c
 Long solves release the GIL; Ctrl-C stops them with KeyboardInterrupt.
 """
 
-from ._membra import OutputError, SceneError
-from .design import DesignResult, design
-from .membrane import Membrane
-from .result import Result
-from .scene import Scene, validate
-from .run import MembraWarning, run
-from . import sweep_spec
+from ._build import PYTHON as _BUILT_FOR
+from ._build import VERSION as __version__
+
+
+def _check_interpreter():
+    """Fails at import, naming the interpreter to use, where the native module or numpy would
+    fail later: another Python version, or an interpreter without numpy."""
+    import importlib.machinery
+    import sys
+    from pathlib import Path
+
+    here = Path(__file__).resolve().parent
+    natives = [p.name for p in here.glob("_membra*.so")]
+    suffixes = importlib.machinery.EXTENSION_SUFFIXES
+    if natives and not any(n.endswith(s) for n in natives for s in suffixes):
+        raise ImportError(
+            f"membra's native module ({natives[0]}) was built for {_BUILT_FOR}; this is "
+            f"{sys.executable} (Python {sys.version_info.major}.{sys.version_info.minor}): "
+            f"run it with {_BUILT_FOR}")
+    try:
+        import numpy  # noqa: F401  (every array membra returns is numpy's)
+    except ImportError:
+        raise ImportError(
+            f"membra needs numpy, which {sys.executable} does not have: run it with "
+            f"{_BUILT_FOR}, the interpreter membra was built for (Debian's python3-numpy)"
+        ) from None
+
+
+_check_interpreter()
+
+from ._membra import OutputError, SceneError  # noqa: E402
+from .design import DesignResult, design  # noqa: E402
+from .membrane import Membrane  # noqa: E402
+from .result import Result  # noqa: E402
+from .scene import Scene, validate  # noqa: E402
+from .run import MembraWarning, run  # noqa: E402
+from . import sweep_spec  # noqa: E402
 
 __all__ = [
+    "__version__",
     "Scene",
     "run",
     "validate",

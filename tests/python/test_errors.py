@@ -1,6 +1,8 @@
 """Bad input raises membra.SceneError naming the field; unwritable outputs raise OutputError."""
 
 import os
+import subprocess
+import sys
 
 import pytest
 
@@ -64,3 +66,18 @@ def test_a_file_in_the_way_raises_output_error(small_ellipse, tmp_path):
     with pytest.raises(membra.OutputError):
         result.write(tmp_path / "file" / "out")
     assert (tmp_path / "file").read_text() == "not a folder"
+
+
+def test_the_version_is_the_clis(cli):
+    out = subprocess.run([cli, "--version"], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == f"membra {membra.__version__}"
+
+
+def test_an_interpreter_without_numpy_fails_at_import_naming_the_right_one():
+    # numpy hidden from this interpreter: the import fails at once, not at the first array.
+    code = "import sys; sys.modules['numpy'] = None; import membra"
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       env=dict(os.environ))
+    assert r.returncode != 0
+    assert "membra needs numpy" in r.stderr
+    assert "run it with " in r.stderr
