@@ -26,8 +26,10 @@ def _check_interpreter():
 
     here = Path(__file__).resolve().parent
     natives = [p.name for p in here.glob("_membra*.so")]
-    suffixes = importlib.machinery.EXTENSION_SUFFIXES
-    if natives and not any(n.endswith(s) for n in natives for s in suffixes):
+    # The interpreter's own tagged suffixes (".cpython-311-x86_64-linux-gnu.so"): the plain
+    # ".so" and the stable ABI's would match a module built for any version.
+    tagged = [s for s in importlib.machinery.EXTENSION_SUFFIXES if s not in (".so", ".abi3.so")]
+    if natives and not any(n.endswith(s) for n in natives for s in tagged):
         raise ImportError(
             f"membra's native module ({natives[0]}) was built for {_BUILT_FOR}; this is "
             f"{sys.executable} (Python {sys.version_info.major}.{sys.version_info.minor}): "

@@ -18,7 +18,9 @@ def run(scene, out=None, set=None, progress=None):
     out: if given, the folder to write the outputs to (Result.write).
     set: overrides, as for membra.Scene.
     progress: None or a callable taking a dict {"stage", "iteration", "max_iterations",
-        "residual_relative", "wall_seconds"}, called every so often.
+        "residual_relative", "wall_seconds", "step_done", "run_done"}, called every so often
+        (run_done: the share of the whole run done, its steps weighted by their increments, or
+        -1 when unknown; step_done: of the current step's path).
 
     The solve runs without the GIL (other Python threads go on); Ctrl-C raises
     KeyboardInterrupt within a progress interval. A run that diverges returns a Result with

@@ -31,6 +31,8 @@ inline py::dict progress_dict(const Progress& p) {
   d["max_iterations"] = p.max_iterations;
   d["residual_relative"] = p.residual_relative;
   d["wall_seconds"] = p.wall_seconds;
+  d["step_done"] = p.step_done;  // share of the step's path done, -1: not a path
+  d["run_done"] = p.run_done;    // share of the whole run done, -1: unknown
   return d;
 }
 

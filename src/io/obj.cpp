@@ -1,5 +1,6 @@
 #include "membra/io/obj.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -48,6 +49,7 @@ void write_obj(std::ostream& out, const Points& x, const std::vector<Triangle>& 
     out << line;
   }
   for (const bool resin : {false, true}) {
+    if (std::find(layers.resin.begin(), layers.resin.end(), resin) == layers.resin.end()) continue;
     const char* name = resin ? "resin" : "latex";
     out << "g " << name << "\nusemtl " << name << '\n';
     for (size_t k = 0; k < triangles.size(); ++k) {

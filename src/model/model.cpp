@@ -27,7 +27,8 @@ double saddle_escape_length(const Model& model) {
   if (count > 0) return sum / static_cast<double>(count);
   if (model.reference.cols() < 2) return 1.0;
   const Vec3 extent = model.reference.rowwise().maxCoeff() - model.reference.rowwise().minCoeff();
-  return std::max(extent.x(), extent.y());
+  const double side = std::max(extent.x(), extent.y());
+  return side > 0.0 ? side : 1.0;
 }
 
 State State::at_rest(const Model& model) {

@@ -50,13 +50,26 @@ std::optional<CoarseGrid> coarse_grid(const Scene& scene) {
   std::vector<Polyline2> boundaries(spec.features.begin(), spec.features.end());
   boundaries.push_back(sheet_outline(spec.width, spec.height, spec.disk, spec.mesh.tolerance));
   // Narrow along two grid spacings of its boundary at least: a pinch point is not a feature.
-  const NarrowestFeature n =
-      narrowest_feature(boundaries, std::min(1e-3, 0.25 * spacing), 2.0 * spacing);
+  // Samples every quarter spacing, at most 1 mm and at least 0.05 mm apart (a finer grid than
+  // that is beyond any resolution named).
+  const auto narrowest_at = [&](double h) {
+    return narrowest_feature(boundaries, std::clamp(0.25 * h, 5e-5, 1e-3), 2.0 * h);
+  };
+  const NarrowestFeature n = narrowest_at(spacing);
   if (!(n.width > 0.0) || n.width >= kAcross * spacing) return std::nullopt;
   CoarseGrid c{n.width, n.at, spacing, {}, {}};
-  const double needed = n.width / kAcross;
-  c.resolution = {static_cast<int>(std::ceil(g.width / needed)) + 1,
-                  static_cast<int>(std::ceil(g.height / needed)) + 1};
+  // The resolution that resolves it; on that finer grid a shorter feature may count, so the
+  // grid named is checked in turn (a few rounds; each only refines).
+  double needed = n.width / kAcross;
+  for (int round = 0; round < 4; ++round) {
+    c.resolution = {static_cast<int>(std::min(std::ceil(g.width / needed) + 1, 1e6)),
+                    static_cast<int>(std::min(std::ceil(g.height / needed) + 1, 1e6))};
+    if (std::max(c.resolution[0], c.resolution[1]) > kLargestResolution) break;  // none will do
+    const double h = std::max(g.width / (c.resolution[0] - 1), g.height / (c.resolution[1] - 1));
+    const NarrowestFeature finer = narrowest_at(h);
+    if (!(finer.width > 0.0) || finer.width >= kAcross * h) break;
+    needed = std::min(needed, finer.width / kAcross) * 0.999;
+  }
   c.message = coarse_message(c);
   return c;
 }

@@ -120,10 +120,17 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
   // next (at 128^2 about a factorization's cost; docs/solver.md), and frees them
   // with the path.
   const auto cache = newton ? make_newton_cache() : nullptr;
+  // Each solve's progress says how much of the path was done before it.
+  const ProgressFn along = [&](const Progress& pr) {
+    if (!progress) return;
+    Progress q = pr;
+    q.step_done = walk.done_fraction();
+    progress(q);
+  };
   while (!walk.done() && !total.diverged) {
     const double tolerance = walk.begin(s.x);
-    const SolveReport r = solve_scene_step(scene, p, s, walk.stage(name), progress, nullptr,
-                                           tolerance, nullptr, cache);
+    const SolveReport r =
+        solve_scene_step(scene, p, s, walk.stage(name), along, nullptr, tolerance, nullptr, cache);
     if (r.out_of_time) {  // the run's budget is spent: stop here, not halve or go on
       accumulate(total, r);
       recorder.record(p.membrane.sheet.model, s.x, thickness);  // the state it stopped in

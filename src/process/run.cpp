@@ -1,8 +1,10 @@
 #include "membra/process/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 #include "membra/process/explore.hpp"
 #include "membra/process/grid_resolution.hpp"
@@ -25,8 +27,43 @@ void note_budget(const Scene& scene, RunResult& r) {
 
 }  // namespace
 
+namespace {
+
+// A step's share of a run's work: its increments where it follows a path, else one.
+double step_weight(const ProtocolStep& step) {
+  return std::visit(
+      [](const auto& s) {
+        if constexpr (requires { s.path.increments; })
+          return static_cast<double>(std::max(1, s.path.increments));
+        else
+          return 1.0;
+      },
+      step.step);
+}
+
+}  // namespace
+
+ProgressFn SceneRun::whole_run(ProgressFn progress) const {
+  if (!progress) return progress;
+  return [this, progress = std::move(progress)](const Progress& pr) {
+    Progress q = pr;
+    const auto& steps = scene_.protocol;
+    double total = 0.0, done = 0.0;
+    for (size_t k = 0; k < steps.size(); ++k) {
+      const double w = step_weight(steps[k]);
+      total += w;
+      if (k < r_.steps.size())
+        done += w;
+      else if (k == r_.steps.size())
+        done += w * std::max(0.0, pr.step_done);
+    }
+    q.run_done = total > 0.0 ? std::min(1.0, done / total) : -1.0;
+    progress(q);
+  };
+}
+
 SceneRun::SceneRun(const Scene& scene, ProgressFn progress)
-    : scene_(scene), progress_(std::move(progress)) {
+    : scene_(scene), progress_(whole_run(std::move(progress))) {
   r_.prepared = prepare_scene(scene);
   recorder_ = FrameRecorder{scene.output.frames, &r_.frames};
 }
@@ -81,29 +118,22 @@ bool SceneRun::solve() {
       {"solve", solve_scene_step(scene_, r_.prepared, s, "solve", progress_, &recorder_), 0});
 }
 
-namespace {
-
-// The advice a result carries: a grid too coarse for the pattern (grid_resolution.hpp).
 std::vector<std::string> run_warnings(const Scene& scene) {
   std::vector<std::string> out;
   if (const auto coarse = coarse_grid(scene)) out.push_back(coarse->message);
   return out;
 }
 
-}  // namespace
-
 RunResult SceneRun::result() const {
   RunResult r = r_;
   note_budget(scene_, r);
   if (!r.solve.diverged) summarize_run(r, curvature_field_);
-  r.warnings = run_warnings(scene_);
   return r;
 }
 
 RunResult SceneRun::finish() {
   note_budget(scene_, r_);
   if (!r_.solve.diverged) summarize_run(r_, curvature_field_);
-  r_.warnings = run_warnings(scene_);
   return std::move(r_);
 }
 
@@ -124,6 +154,7 @@ RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
   RunResult r = multilevel_grids(scene).size() > 1 ? run_multilevel(scene, progress)
                                                    : run_on_own_grid(scene, progress);
   if (scene.simulation.explore > 1 && !r.solve.diverged) explore_branches(scene, r, progress);
+  r.warnings = run_warnings(scene);  // once per run, not per grid level or explored release
   return r;
 }
 

@@ -48,7 +48,7 @@ SolveReport run_dynamics(const Model& model, State& state, const DynamicsOptions
     r.residual_relative = r.residual / o.force_scale;
     const bool quiet = r.residual_relative <= o.tolerance && state.time >= o.settle_after;
     small_in_a_row = quiet ? small_in_a_row + 1 : 0;
-    if (o.progress) o.progress({"", step, o.steps, r.residual_relative, seconds()});
+    if (o.progress) o.progress({"", step, o.steps, r.residual_relative, seconds(), -1.0, -1.0});
     if (o.stop_when_converged && small_in_a_row >= o.confirm_checks) break;
     if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
   }

@@ -327,7 +327,7 @@ void Newton::run(const Stopwatch& clock) {
       return;
     }
     if (o_.progress)
-      o_.progress({"", it, o_.max_iterations, r_.residual_relative, clock.seconds()});
+      o_.progress({"", it, o_.max_iterations, r_.residual_relative, clock.seconds(), -1.0, -1.0});
     if (r_.residual_relative <= o_.tolerance) {
       if (exact_recent || exact_is_positive_definite()) {
         r_.converged = true;

@@ -114,7 +114,7 @@ SolveReport StaticRelaxation::advance(const Model& model, State& state, long ite
       r.wall_seconds = seconds();
       return r;
     }
-    if (o.progress) o.progress({"", k, iterations, r.residual_relative, seconds()});
+    if (o.progress) o.progress({"", k, iterations, r.residual_relative, seconds(), -1.0, -1.0});
     if (r.residual_relative <= o.tolerance) break;
     if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
   }

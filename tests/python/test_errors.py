@@ -81,3 +81,14 @@ def test_an_interpreter_without_numpy_fails_at_import_naming_the_right_one():
     assert r.returncode != 0
     assert "membra needs numpy" in r.stderr
     assert "run it with " in r.stderr
+
+
+def test_another_python_version_fails_at_import_naming_the_right_one():
+    # As if this were a Python 3.99: its extension suffix matches no native module here.
+    code = ("import importlib.machinery as m; "
+            "m.EXTENSION_SUFFIXES[:] = ['.cpython-399-x86_64-linux-gnu.so', '.abi3.so', '.so']; "
+            "import membra")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       env=dict(os.environ))
+    assert r.returncode != 0
+    assert "was built for" in r.stderr and "run it with " in r.stderr

@@ -144,3 +144,9 @@ def test_progress_is_reported(small_ellipse):
     seen = []
     membra.run(small_ellipse, progress=seen.append)
     assert seen and {"stage", "iteration", "residual_relative"} <= set(seen[0])
+    # The whole run's share done grows, never goes back, and stays within [0, 1]; the release
+    # (10 of its 12 weights: stretch 1, impregnate 1, release 10) is most of it.
+    done = [p["run_done"] for p in seen]
+    assert all(0.0 <= d <= 1.0 for d in done)
+    assert done == sorted(done)
+    assert max(done) >= 2 / 12 + 0.5 * 10 / 12

@@ -11,6 +11,11 @@ struct Progress {
   long max_iterations = 0;
   double residual_relative = 0.0;
   double wall_seconds = 0.0;
+  // How much of the current step's path was done before this solve (0..1; -1: not a path), and
+  // of the whole run, its steps weighted by their increments (0..1; -1: unknown). Both count
+  // finished increments only, so they grow in jumps and never go back.
+  double step_done = -1.0;
+  double run_done = -1.0;
 };
 
 // Called every so often by long runs; may be empty.

@@ -73,7 +73,7 @@ struct Model {
 // How far Newton's step along negative curvature may move a particle (m): on a lattice, the mean
 // rest length of the springs (as the lattice's examples were validated with); on a continuum
 // sheet (no springs), the sheet's larger side, because its graded elements say nothing of the
-// scale a sheet buckles at (docs/solver.md, "Escaping saddles"). 1 for a model of neither.
+// scale a sheet buckles at (docs/solver.md, "Escaping saddles"). 1 where neither gives a length.
 double saddle_escape_length(const Model& model);
 
 struct State {

@@ -27,6 +27,8 @@ class IncrementWalk {
   // Begins the next increment: sets the path at its end and, adaptive, moves x by the predictor.
   // Returns the tolerance its solve should reach.
   double begin(Points& x);
+  // The share of the path accepted so far, in [0, 1].
+  double done_fraction() const { return units() > 0 ? static_cast<double>(at_) / units() : 1.0; }
   // The position at the end of the increment begun, in (0, 1].
   double t() const { return static_cast<double>(next_) / units(); }
   // The tolerance the increment begun is to be solved to (as begin returned).

@@ -37,12 +37,19 @@ class SceneRun {
  private:
   bool record(StepReport step);
   void start_budget();
+  // The caller's progress with run_done filled in: the steps recorded so far and the current
+  // one's step_done, each step weighted by its increments (1 without a path).
+  ProgressFn whole_run(ProgressFn progress) const;
   const Scene& scene_;
   ProgressFn progress_;
   RunResult r_;
   FrameRecorder recorder_;
   std::function<double(const Vec2&)> curvature_field_;  // of the last curvature_map step
 };
+
+// The advice a run of `scene` carries (RunResult::warnings): a grid too coarse for its pattern
+// (grid_resolution.hpp). run_scene fills it in; a run taken step by step asks for it.
+std::vector<std::string> run_warnings(const Scene& scene);
 
 // Runs a scene to the end. `progress` (optional) is called every so often. Throws InputError
 // when a step cannot be carried out (a pattern that covers no spring).

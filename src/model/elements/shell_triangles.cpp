@@ -89,11 +89,14 @@ template <typename T>
 T geometric(int m, const std::array<P3<T>, 4>& p) {
   using std::sqrt;
   const P3<T> c = cross(p[1] - p[0], p[2] - p[0]);
+  // A face collapsed to a line has no normal: no reading (as a zero normal read before).
+  if (!(value_of(dot(c, c)) > 0.0)) return T(0.0);
   const T c_norm = sqrt(dot(c, c));
   if (m < 3) return dot(p[3] - p[0], c) / c_norm;
   const auto k = static_cast<size_t>(m - 3);
   const P3<T>&a = p[(k + 1) % 3], &b = p[(k + 2) % 3];
   const P3<T> c2 = cross(a - b, p[3] - b);
+  if (!(value_of(dot(c2, c2)) > 0.0)) return T(0.0);
   const T inv_c = T(1.0) / c_norm, inv_c2 = T(1.0) / T(sqrt(dot(c2, c2)));
   const P3<T> mk = scaled(c, inv_c) + scaled(c2, inv_c2);
   const T mk2 = dot(mk, mk);
