@@ -65,6 +65,10 @@ class Ellipse final : public Pattern {
     const double hx = std::hypot(a_ * cos_, b_ * sin_), hy = std::hypot(a_ * sin_, b_ * cos_);
     return {c_ - Vec2(hx, hy), c_ + Vec2(hx, hy)};
   }
+  std::vector<PlaneCurve> exact_outline() const override {
+    return {
+        PlaneCurve::ellipse_arc(c_, a_, b_, std::atan2(sin_, cos_), 0.0, 2.0 * std::numbers::pi)};
+  }
 
  private:
   Vec2 c_;
@@ -83,6 +87,14 @@ class Polygon final : public Pattern {
     return contains(p) ? -d : d;
   }
   bool field_is_distance() const override { return true; }
+  std::vector<PlaneCurve> exact_outline() const override {
+    const auto& v = index_.vertices();
+    std::vector<PlaneCurve> edges;
+    for (size_t i = 0; i < v.size(); ++i)
+      if (v[i] != v[(i + 1) % v.size()])
+        edges.push_back(PlaneCurve::segment(v[i], v[(i + 1) % v.size()]));
+    return edges;
+  }
 
  private:
   PolygonIndex index_;  // edges on a grid: 10^5-vertex outlines stay fast
@@ -164,6 +176,8 @@ class Union final : public Pattern {
     return f;
   }
   Box2 bounds() const override { return box_; }
+  Combination combination() const override { return Combination::union_of; }
+  std::vector<PatternPtr> parts() const override { return parts_; }
 
  private:
   std::vector<PatternPtr> parts_;
@@ -188,6 +202,8 @@ class Difference final : public Pattern {
     for (size_t i = 1; i < parts_.size(); ++i) f = std::max(f, -parts_[i]->field(p));
     return f;
   }
+  Combination combination() const override { return Combination::difference_of; }
+  std::vector<PatternPtr> parts() const override { return parts_; }
 
  private:
   std::vector<PatternPtr> parts_;

@@ -97,11 +97,11 @@ void stage_patterns(const Scene& scene, RunStaging& s) {
   s.bottom = scene_pattern(scene, true);
   if (!s.top && !s.bottom) return;
   s.frame = scene_frame(scene);
-  const auto trace = [&](const PatternPtr& p) {
-    return p ? trace_outlines(*p, s.frame, 0.25e-3) : std::vector<Polygon2>{};
+  const auto draw = [&](const PatternPtr& p) {
+    return p ? stencil_outline(*p, s.frame) : std::vector<CurveLoop>{};
   };
-  s.outlines = trace(s.top);
-  s.underside = trace(s.bottom);
+  s.outlines = draw(s.top);
+  s.underside = draw(s.bottom);
 }
 
 }  // namespace

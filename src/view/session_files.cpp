@@ -57,7 +57,7 @@ void export_session(const ViewerSession& session, const std::filesystem::path& f
     if (parts.empty()) throw InputError(file.string(), "there is no resin to export yet");
     const PatternPtr all = make_union(parts);
     const Box2 frame = scene_frame(saved);
-    const auto outlines = trace_outlines(*all, frame, 0.25e-3);
+    const auto outlines = stencil_outline(*all, frame);
     if (ext == ".svg")
       write_svg(out, outlines, frame);
     else

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "membra/core/vec.hpp"
+#include "membra/geometry/plane_curve.hpp"
 
 namespace membra {
 
@@ -24,6 +25,9 @@ struct Box2 {
   Box2 intersect(const Box2& b) const { return {min.cwiseMax(b.min), max.cwiseMin(b.max)}; }
 };
 
+class Pattern;
+using PatternPtr = std::shared_ptr<const Pattern>;
+
 class Pattern {
  public:
   virtual ~Pattern() = default;
@@ -37,9 +41,16 @@ class Pattern {
   // True when field() outside bounds() is at least the distance to bounds() (a true signed
   // distance): a union then skips the parts too far away to be its nearest.
   virtual bool field_is_distance() const { return false; }
-};
 
-using PatternPtr = std::shared_ptr<const Pattern>;
+  // How the pattern is built, for the stencil's exact outline (model/pattern_stencil.hpp): a
+  // primitive gives its outline as segments and elliptical arcs, or nothing when it has no
+  // exact form (strips, rings, hyperbola bands, images: the stencil traces those); a union or a
+  // difference gives its parts.
+  enum class Combination { primitive, union_of, difference_of };
+  virtual Combination combination() const { return Combination::primitive; }
+  virtual std::vector<PatternPtr> parts() const { return {}; }
+  virtual std::vector<PlaneCurve> exact_outline() const { return {}; }
+};
 
 // Points within width/2 of a polyline (round caps and joints). width > 0, >= 1 point.
 PatternPtr make_strip(std::vector<Vec2> points, double width);

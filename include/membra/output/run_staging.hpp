@@ -1,12 +1,12 @@
 #pragma once
 // What a finished run's outputs show, computed once before anything is written: values in the
-// outputs' units, colour ranges and colourings, the global form, the patterns and their traced
-// outlines. The writers (run_files.hpp) and painters (render/run_pictures.hpp) only draw it.
+// outputs' units, colour ranges and colourings, the global form, the patterns and their
+// stencil outlines. The writers (run_files.hpp) and painters (render/run_pictures.hpp) only draw it.
 #include <vector>
 
 #include "membra/measure/colormap.hpp"
 #include "membra/model/pattern.hpp"
-#include "membra/model/pattern_outline.hpp"
+#include "membra/model/pattern_stencil.hpp"
 #include "membra/output/report_page.hpp"
 #include "membra/process/run.hpp"
 
@@ -43,8 +43,8 @@ struct Colouring {
 // What a run's files and pictures show, computed before any of them is written: the values and
 // their colour ranges, the two colourings, the global form and its colouring, each explored
 // branch's and each frame's colouring, the curvature map's target and measured colourings on the
-// target's range, and the patterns on both faces (nullptr where none) with their outlines traced
-// every 0.25 mm on the frame.
+// target's range, and the patterns on both faces (nullptr where none) with the stencil's outlines
+// drawn from their geometry.
 struct RunStaging {
   PictureOptions options;
   RunColors colors;
@@ -56,7 +56,7 @@ struct RunStaging {
   Colouring target, measured;     // a curvature map's, on the target's range
   PatternPtr top, bottom;
   Box2 frame;
-  std::vector<Polygon2> outlines, underside;
+  std::vector<CurveLoop> outlines, underside;
 };
 RunStaging prepare_run_staging(const Scene& scene, const RunResult& r, const PictureOptions& opts);
 
