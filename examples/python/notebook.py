@@ -1,30 +1,38 @@
 """A notebook's worth of membra (docs/python.md): run a scene, plot its curvature, change the
-pattern, run again, compare. Run it as a script or paste the cells into Jupyter:
+pattern, run again, compare. Run it as a script, or open notebook.ipynb (the same cells, made
+from this file by scripts/notebook-from-script) in Jupyter:
 
     PYTHONPATH=build/python python3 examples/python/notebook.py [--resolution N] [--out DIR]
 """
 
+# %% 0. Settings. A script takes them from its command line; in Jupyter, edit them here (the
+# test suite sets them through the environment). Jupyter runs a notebook in its own folder.
 import argparse
+import os
+import sys
 from pathlib import Path
 
 import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")  # no window: the figure is saved
+import membra
+
+in_jupyter = "ipykernel" in sys.modules
+here = Path(__file__).resolve().parent if "__file__" in globals() else Path.cwd()
+resolution = int(os.environ.get("MEMBRA_NOTEBOOK_RESOLUTION", 31))
+out = Path(os.environ.get("MEMBRA_NOTEBOOK_OUT", "out/notebook"))
+if not in_jupyter:
+    matplotlib.use("Agg")  # no window: the figure is saved
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--resolution", type=int, default=resolution)
+    parser.add_argument("--out", default=str(out))
+    args = parser.parse_args()
+    resolution, out = args.resolution, Path(args.out)
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-import membra  # noqa: E402
-
-here = Path(__file__).resolve().parent
-parser = argparse.ArgumentParser()
-parser.add_argument("--resolution", type=int, default=31)
-parser.add_argument("--out", default="out/notebook")
-args = parser.parse_args()
-out = Path(args.out)
 
 # %% 1. The paper's headline example: an elliptical pattern that releases into a bowl.
 scene = membra.Scene(here.parent / "synclastic_ellipse.json",
-                     set={"sheet.resolution": [args.resolution] * 2, "simulation.solver": "newton"})
+                     set={"sheet.resolution": [resolution] * 2, "simulation.solver": "newton"})
 bowl = membra.run(scene, out=out / "bowl")
 print(bowl, "global form:", bowl.report["curvature"]["global"]["classification"])
 
@@ -61,3 +69,6 @@ m = membra.Membrane(scene)
 m.run_protocol()
 same = np.allclose(m.positions, bowl.positions)
 print("step by step gives the same form as membra.run:", same)
+
+# %% 5. In Jupyter, a result shows itself: the form in 3-D (drag to turn) and its numbers.
+bowl

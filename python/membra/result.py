@@ -58,6 +58,25 @@ class Result:
         self.render_note = note  # "" or why no PNG could be rendered (no OpenGL)
         return Path(dir)
 
+    def _repr_html_(self):
+        """Jupyter's inline view: the form in 3-D (drag to turn), coloured by Gaussian
+        curvature, beside its key numbers."""
+        from .inline_view import result_html
+
+        r = self.report
+        shape, glob = r.get("shape", {}), r.get("curvature", {}).get("global", {})
+        facts = [("global form", str(glob.get("classification", "?"))),
+                 ("height", f"{shape.get('height', float('nan')):.1f} mm"),
+                 ("global total K", f"{glob.get('total', float('nan')):+.3f} rad"),
+                 ("particles", str(len(self.positions))),
+                 ("converged", "yes" if self.converged else "no")]
+        quadric = shape.get("quadric")
+        if quadric:
+            facts.insert(1, ("best-fit quadric", str(quadric.get("classification"))))
+        facts += [("warning", w) for w in self.warnings]
+        return result_html(self.positions, self.triangles, self.gaussian_curvature,
+                           f"membra: {self.scene.name}", facts)
+
     def __repr__(self):
         shape = self.report.get("shape", {})
         return (f"<membra.Result {self.scene.name!r}: {len(self.positions)} particles, "

@@ -1,7 +1,8 @@
 #pragma once
 // What a finished run's outputs show, computed once before anything is written: values in the
 // outputs' units, colour ranges and colourings, the global form, the patterns and their
-// stencil outlines. The writers (run_files.hpp) and painters (render/run_pictures.hpp) only draw it.
+// stencil outlines. The writers (run_files.hpp) and painters (render/run_pictures.hpp) only draw
+// it.
 #include <vector>
 
 #include "membra/measure/colormap.hpp"
