@@ -171,7 +171,7 @@ CLI::App* add_run(CLI::App& app, Args& a) {
   run->add_option("--set", a.sets, kSetHelp)->type_name("PATH=VALUE");
   run->add_option(
          "--curvature-range", a.run_opts.curvature_range,
-         "Colour range of curvature.png and final.ply, 1/mm^2 (default: symmetric, automatic)")
+         "Colour range of curvature.png and final.ply, 1/m^2 (default: symmetric, automatic)")
       ->expected(2)
       ->allow_extra_args(false)
       ->type_name("LO HI");

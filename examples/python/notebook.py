@@ -36,11 +36,11 @@ scene = membra.Scene(here.parent / "synclastic_ellipse.json",
 bowl = membra.run(scene, out=out / "bowl")
 print(bowl, "global form:", bowl.report["curvature"]["global"]["classification"])
 
-# %% 2. Its curvature, plotted on the released form (mm and 1/mm^2, as in the outputs).
+# %% 2. Its curvature, plotted on the released form (mm and 1/m², as in the outputs).
 def plot(ax, result, title, lim):
     x, y, z = result.positions.T
     k = result.gaussian_curvature
-    surf = ax.plot_trisurf(x, y, z, triangles=result.triangles, cmap="RdYlGn_r",
+    surf = ax.plot_trisurf(x, y, z, triangles=result.triangles, cmap="RdBu_r",
                            vmin=-lim, vmax=lim, linewidth=0)
     surf.set_array(k[result.triangles].mean(axis=1))
     ax.set_title(title, fontsize=9)
@@ -55,11 +55,11 @@ print(narrow)
 
 fig = plt.figure(figsize=(10, 4.5))
 # One colour range for both, so that the colour bar reads for each: 95 % of |K| in range.
-lim = max(np.percentile(np.abs(r.gaussian_curvature), 95) for r in (bowl, narrow)) or 1e-9
+lim = max(np.percentile(np.abs(r.gaussian_curvature), 95) for r in (bowl, narrow)) or 1.0
 for i, (result, title) in enumerate([(bowl, "ellipse 120 x 80 mm"), (narrow, "ellipse 120 x 50 mm")]):
     ax = fig.add_subplot(1, 2, i + 1, projection="3d")
     surf = plot(ax, result, f"{title}: height {result.report['shape']['height']:.1f} mm", lim)
-fig.colorbar(surf, ax=fig.axes, shrink=0.6, label="Gaussian curvature, 1/mm²")
+fig.colorbar(surf, ax=fig.axes, shrink=0.6, label="Gaussian curvature, 1/m²")
 fig.savefig(out / "compare.png", dpi=100)
 print(f"heights: {bowl.report['shape']['height']:.1f} mm and {narrow.report['shape']['height']:.1f} mm;"
       f" figure in {out / 'compare.png'}")
@@ -67,7 +67,7 @@ print(f"heights: {bowl.report['shape']['height']:.1f} mm and {narrow.report['sha
 # %% 4. The process step by step, as in the lab: stretch, impregnate, release.
 m = membra.Membrane(scene)
 m.run_protocol()
-same = np.allclose(m.positions, bowl.positions)
+same = np.allclose(m.result().positions, bowl.positions)  # both in the reading pose
 print("step by step gives the same form as membra.run:", same)
 
 # %% 5. In Jupyter, a result shows itself: the form in 3-D (drag to turn) and its numbers.

@@ -1,7 +1,7 @@
 """membra: the form a pre-stretched, resin-impregnated membrane takes when released.
 
-Units, as in the scene files and the outputs: lengths in millimetres, Gaussian curvature in
-1/mm^2, stress in MPa, time in seconds. Quick start (docs/python.md)::
+Units, as in the outputs: lengths in millimetres, Gaussian curvature in 1/m^2 (principal
+curvatures in 1/m), stress in MPa, time in seconds. Quick start (docs/python.md)::
 
     import membra
     scene = membra.Scene("examples/synclastic_ellipse.json", set={"sheet.resolution": [21, 21]})

@@ -1,5 +1,5 @@
 """Type stubs of membra's public API (docs/python.md); tests/python/test_stubs.py keeps them
-in step with the module. Units as in the outputs: mm, 1/mm^2 (Gaussian curvature), MPa."""
+in step with the module. Units as in the outputs: mm, 1/m^2 (Gaussian curvature), MPa."""
 
 from os import PathLike
 from pathlib import Path

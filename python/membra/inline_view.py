@@ -72,21 +72,21 @@ _SCRIPT = """
 
 def result_html(positions, triangles, curvature, title, facts, size=(480, 360)):
     """The view as an HTML fragment: positions (n, 3) mm, triangles (m, 3), curvature (n,)
-    1/mm^2, facts: (label, text) rows shown beside it."""
+    1/m^2, facts: (label, text) rows shown beside it."""
     x = np.asarray(positions, dtype=float)
     x = x - 0.5 * (x.min(axis=0) + x.max(axis=0))
     tri = np.asarray(triangles, dtype=np.int64)
     k = np.asarray(curvature, dtype=float)[tri].mean(axis=1)
     limit = float(np.percentile(np.abs(k), 95)) if len(k) else 0.0
-    limit = limit if limit > 0 else 1e-9
+    limit = limit if limit > 0 else 1.0
     colours = diverging_colours(k, limit)
     data = {"x": np.round(x, 2).ravel().tolist(), "t": tri.ravel().tolist(),
             "c": colours.ravel().tolist(), "r": float(np.linalg.norm(x, axis=1).max() or 1.0)}
     canvas_id = "membra-" + uuid.uuid4().hex[:12]
     rows = "".join(f"<tr><td style='padding-right:1em;color:#555;white-space:nowrap;vertical-align:top'>{html.escape(a)}</td>"
                    f"<td>{html.escape(b)}</td></tr>" for a, b in facts)
-    legend = (f"colour: Gaussian curvature, blue {-limit * 1e6:.3g} .. white 0 .. red "
-              f"{limit * 1e6:.3g} 1/m² (95 % of |K|); drag to turn")
+    legend = (f"colour: Gaussian curvature, blue {-limit:.3g} .. white 0 .. red "
+              f"{limit:.3g} 1/m² (95 % of |K|); drag to turn")
     return (f"<div style='display:flex;gap:1em;align-items:flex-start;font:13px sans-serif'>"
             f"<div><canvas id='{canvas_id}' width='{size[0]}' height='{size[1]}' "
             f"style='border:1px solid #ddd;cursor:grab'></canvas>"

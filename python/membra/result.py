@@ -10,7 +10,7 @@ class Result:
       positions          (n, 3) float, mm: where each particle came to rest
       paper_positions    (n, 2) float, mm: where it sits on the unstretched paper sheet
       triangles          (m, 3) int: particle indices, counter-clockwise seen from +z
-      gaussian_curvature (n,) float, 1/mm^2: angle defect over area (0 on the rim)
+      gaussian_curvature (n,) float, 1/m^2: angle defect over area (0 on the rim)
       stress             (n,) float, MPa: mean stress of the particle's springs
     report: dict, the same as report.json (docs/cli.md lists its keys and units).
     """
@@ -52,7 +52,7 @@ class Result:
     def write(self, dir, curvature_range=None, stress_range=None):
         """Writes the files `membra run --out DIR` writes (report.json, final.obj, final.ply,
         pattern.svg/.dxf, the PNG pictures), all or nothing. curvature_range: (lo, hi) in
-        1/mm^2, stress_range: (lo, hi) in MPa, as --curvature-range / --stress-range.
+        1/m^2, stress_range: (lo, hi) in MPa, as --curvature-range / --stress-range.
         Returns the folder as a Path. Raises membra.OutputError when it cannot be written."""
         note = self._native.write(str(dir), list(curvature_range or []), list(stress_range or []))
         self.render_note = note  # "" or why no PNG could be rendered (no OpenGL)

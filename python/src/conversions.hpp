@@ -1,6 +1,6 @@
 #pragma once
 // Library values as Python objects: a run's end state as numpy arrays in the outputs' units
-// (mm, 1/mm^2, MPa), JSON documents as dicts.
+// (mm, 1/m^2, MPa), JSON documents as dicts.
 #include <pybind11/numpy.h>
 #include <nlohmann/json.hpp>
 

@@ -50,7 +50,7 @@ void bind_result(py::module_& m) {
           [](const NativeResult& r) { return triangles(r.run.prepared.membrane.sheet); })
       .def_property_readonly(
           "gaussian_curvature",
-          [](const NativeResult& r) { return per_particle(r.run.curvature.density, 1e-6); })
+          [](const NativeResult& r) { return per_particle(r.run.curvature.density, 1.0); })
       .def_property_readonly(
           "stress", [](const NativeResult& r) { return per_particle(r.run.vertex_stress, 1e-6); })
       .def_property_readonly(

@@ -222,7 +222,7 @@ void write_glb(std::ostream& out, const GlbSheet& s) {
       {"TEXCOORD_0", "the flat (natural) sheet, its larger side 0 to 1"},
       {"COLOR_0", "Gaussian curvature colours"},
       {"COLOR_1", "stress colours"},
-      {"_CURVATURE", "Gaussian curvature, 1/mm^2"},
+      {"_CURVATURE", "Gaussian curvature, 1/m^2"},
       {"_STRESS", "mean stress of the springs at the vertex (tension > 0), MPa"}};
   m.asset.extras = to_value(extras);
   tinygltf::TinyGLTF gltf;

@@ -21,7 +21,7 @@ const std::vector<std::string_view> kBenchmarkKeys = {"problem", "n"};
 const std::vector<std::string_view> kTopKeys = {"benchmark", "$schema",   "name", "description",
                                                 "sheet",     "materials", "pins", "simulation",
                                                 "protocol",  "output",    "model"};
-const std::vector<std::string_view> kOutputKeys = {"frames", "camera", "image_size"};
+const std::vector<std::string_view> kOutputKeys = {"frames", "camera", "image_size", "colormap"};
 const std::vector<std::string_view> kCameraKeys = {"azimuth", "elevation"};
 const std::vector<std::string_view> kSheetKeys = {"size",    "resolution", "material", "springs",
                                                   "bending", "outline",    "mesh"};
@@ -265,6 +265,7 @@ void parse_output(const JsonObject& top, OutputSpec& out) {
     out.image_width = static_cast<int>(size[0]);
     out.image_height = static_cast<int>(size[1]);
   }
+  out.colormap = colour_map_named(o.string("colormap", "diverging", {"diverging", "paper"}));
 }
 
 Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {

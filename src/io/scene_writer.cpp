@@ -188,7 +188,8 @@ json write_simulation(const Scene& scene) {
 json write_output(const OutputSpec& o) {
   return {{"frames", o.frames},
           {"camera", {{"azimuth", o.azimuth}, {"elevation", o.elevation}}},
-          {"image_size", {o.image_width, o.image_height}}};
+          {"image_size", {o.image_width, o.image_height}},
+          {"colormap", to_string(o.colormap)}};
 }
 
 }  // namespace

@@ -144,8 +144,12 @@ struct DxfWriter {
     const double axis = x_major ? c.angle : c.angle + 0.5 * std::numbers::pi;
     const double major = x_major ? c.rx : c.ry, minor = x_major ? c.ry : c.rx;
     const double shift = x_major ? 0.0 : -0.5 * std::numbers::pi;
-    double t0 = std::min(c.t0, c.t1) + shift, t1 = std::max(c.t0, c.t1) + shift;
-    if (c.full_ellipse()) t0 = 0.0, t1 = 2.0 * std::numbers::pi;
+    // Counter-clockwise from a start in [0, 2 pi), as strict CAM readers want.
+    const double turn = 2.0 * std::numbers::pi;
+    double t0 = std::fmod(std::min(c.t0, c.t1) + shift, turn);
+    if (t0 < 0.0) t0 += turn;
+    double t1 = t0 + std::abs(c.t1 - c.t0);
+    if (c.full_ellipse()) t0 = 0.0, t1 = turn;
     out << "0\nELLIPSE\n100\nAcDbEntity\n8\n" << layer << "\n100\nAcDbEllipse\n";
     point(10, c.centre);
     out << "30\n0.0\n11\n"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Dense>
 
@@ -70,13 +71,28 @@ QuadricFit fit_quadric(const Points& x, const Points& paper) {
   const Eigen::Matrix2d shape = l.inverse() * second * l.inverse().transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(shape);
   double k1 = eig.eigenvalues()(1), k2 = eig.eigenvalues()(0);
+  // Principal directions in space: an eigenvector w of the symmetric form is L^T a for the
+  // parameter direction a.
+  const auto direction = [&](int i) {
+    const Eigen::Vector2d along =
+        l.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors().col(i));
+    return Vec3((along.x() * xu + along.y() * xv).normalized());
+  };
+  Vec3 d1 = direction(1), d2 = direction(0), up = normal;
   if (k1 + k2 < 0.0) {  // the normal the other way: both curvatures change sign
     const double old_k1 = k1;
     k1 = -k2;
     k2 = -old_k1;
+    std::swap(d1, d2);
+    up = -normal;
   }
   q.k1 = k1;
   q.k2 = k2;
+  q.centre = c.row(0).transpose();
+  q.normal = up;
+  q.d1 = d1;
+  q.d2 = d2;
+  q.paper_x = xu.normalized();
   double sum = 0.0;
   for (Eigen::Index p = 0; p < n; ++p) {
     const Vec2 uv = (paper.col(p).head<2>() - centre) / scale;

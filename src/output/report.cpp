@@ -1,5 +1,6 @@
 #include "membra/output/report.hpp"
 
+#include <cmath>
 #include <numbers>
 
 #include "membra/core/units.hpp"
@@ -14,7 +15,7 @@ json mm3(const Vec3& v) {
   return {v.x() / units::mm, v.y() / units::mm, v.z() / units::mm};
 }
 
-const double per_mm2 = units::mm * units::mm;  // 1/m^2 to 1/mm^2
+const double per_m2 = 1.0;  // curvature is reported in 1/m^2, SI's own (docs/outputs.md, "Units")
 
 // What the solves did, the model's size, and the stiffnesses.
 // The model, and the continuum sheet's mesh as made and asked for: a script reruns the scene at
@@ -88,6 +89,12 @@ void report_steps(const RunResult& r, json& j) {
   }
 }
 
+// A principal radius in mm, signed as its curvature (1/m); null (JSON) where the curvature is
+// under 1e-3 1/m (a radius beyond a kilometre: flat that way).
+json radius_mm(double k) {
+  return std::abs(k) < 1e-3 ? json(nullptr) : json(1.0 / k / units::mm);
+}
+
 // Energies, shape, curvature, stress of the end state.
 void report_form(const RunResult& r, json& j) {
   j["energy"] = r.elastic_energy + r.bending_energy + r.gravity_energy;
@@ -102,19 +109,28 @@ void report_form(const RunResult& r, json& j) {
                 {"fold_max", r.shape.fold_max / units::mm},
                 {"bbox_min", mm3(r.shape.bbox_min)},
                 {"bbox_max", mm3(r.shape.bbox_max)},
+                {"size", mm3(r.shape.bbox_max - r.shape.bbox_min)},
                 {"form", r.form}};
   // The whole form's best-fit quadric (docs/measures.md): a bowl's two radii, however it wrinkles.
   if (r.shape.quadric.valid)
-    j["shape"]["quadric"] = {{"k1", r.shape.quadric.k1 * units::mm},
-                             {"k2", r.shape.quadric.k2 * units::mm},
-                             {"rms", r.shape.quadric.rms / units::mm},
-                             {"classification", r.shape.quadric.classification}};
+    j["shape"]["quadric"] = {
+        {"k1", r.shape.quadric.k1},
+        {"k2", r.shape.quadric.k2},
+        {"rms", r.shape.quadric.rms / units::mm},
+        {"radii_mm", {radius_mm(r.shape.quadric.k1), radius_mm(r.shape.quadric.k2)}},
+        {"classification", r.shape.quadric.classification}};
+  // Where the outputs' positions come from: R x + t of the simulation's (docs/outputs.md).
+  json rotation = json::array();
+  for (int i = 0; i < 3; ++i)
+    rotation.push_back({r.pose.rotation(i, 0), r.pose.rotation(i, 1), r.pose.rotation(i, 2)});
+  j["pose"] = {
+      {"posed", r.posed}, {"rotation", rotation}, {"translation", mm3(r.pose.translation)}};
   j["curvature"] = {{"total", r.curvature.total},
                     {"positive", r.curvature.positive},
                     {"negative", r.curvature.negative},
                     {"boundary", r.curvature.boundary},
-                    {"min_density", r.curvature.min_density * per_mm2},
-                    {"max_density", r.curvature.max_density * per_mm2},
+                    {"min_density", r.curvature.min_density * per_m2},
+                    {"max_density", r.curvature.max_density * per_m2},
                     {"classification", r.form}};
   // The global form's curvature (window-averaged, docs/measures.md): a wrinkled bowl is a bowl.
   j["curvature"]["global"] = {{"total", r.curvature_global.total},
@@ -133,10 +149,10 @@ void report_curvature_map(const CurvatureMapResult& cm, json& j) {
                         {"reached", cm.reached},
                         {"message", cm.message},
                         {"correlation", cm.match.correlation},
-                        {"rms_error", cm.match.rms_error * per_mm2},
+                        {"rms_error", cm.match.rms_error * per_m2},
                         {"relative_rms_error", cm.match.relative_rms_error},
-                        {"mean_target", cm.match.mean_target * per_mm2},
-                        {"mean_measured", cm.match.mean_measured * per_mm2},
+                        {"mean_target", cm.match.mean_target * per_m2},
+                        {"mean_measured", cm.match.mean_measured * per_m2},
                         {"interior_particles", cm.match.interior},
                         {"margin", cm.margin / units::mm}};
 }
@@ -188,8 +204,8 @@ void report_branches(const RunResult& r, json& j) {
                              {"total_K_global", f.curvature_global.total},
                              {"classification", f.form_global},
                              {"quadric", f.shape.quadric.classification},
-                             {"quadric_k1", f.shape.quadric.k1 * units::mm},
-                             {"quadric_k2", f.shape.quadric.k2 * units::mm},
+                             {"quadric_k1", f.shape.quadric.k1},
+                             {"quadric_k2", f.shape.quadric.k2},
                              {"energy", f.elastic_energy + f.bending_energy + f.gravity_energy},
                              {"output", "branches/" + std::to_string(b + 1) + "/"}});
   }
@@ -233,8 +249,9 @@ json form_units() {
       {"shape.fold_rms", "mm (rms distance from the window's plane: local folds)"},
       {"shape.fold_max", "mm (largest such distance)"},
       {"shape.quadric.k1",
-       "1/mm (larger principal curvature of the best-fit quadric; radius 1/k1)"},
-      {"shape.quadric.k2", "1/mm (smaller; a bowl has both > 0, a saddle k2 < 0)"},
+       "1/m (larger principal curvature of the best-fit quadric; radius 1/k1, in mm as radii_mm)"},
+      {"shape.quadric.k2", "1/m (smaller; a bowl has both > 0, a saddle k2 < 0)"},
+      {"shape.quadric.radii_mm", "mm (1/k1 and 1/k2, signed; null where flat that way)"},
       {"shape.quadric.rms", "mm (the particles' rms distance from that quadric)"},
       {"shape.quadric.classification",
        "text (flat, cylindrical, synclastic, anticlastic; folded: past what a quadric describes)"},
@@ -245,7 +262,7 @@ json form_units() {
       {"curvature.global.total", "rad (of the window-averaged global form)"},
       {"curvature.global.positive", "rad"},
       {"curvature.global.negative", "rad"},
-      {"curvature.min_density", "1/mm^2"}};
+      {"curvature.min_density", "1/m^2"}};
 }
 
 // The units of the stress, cut, stability, map and branch keys.
@@ -272,24 +289,29 @@ json mechanics_units() {
        "N/mm (upper bound of the energy Hessian's smallest eigenvalue when unstable, else 0)"},
       {"stability.shift", "N/mm (stable means Hessian + shift I is positive definite)"},
       {"curvature_map.rms_error",
-       "1/mm^2 (measured - target Gaussian curvature over the interior particles)"},
-      {"curvature_map.mean_target", "1/mm^2"},
-      {"curvature_map.mean_measured", "1/mm^2"},
+       "1/m^2 (measured - target Gaussian curvature over the interior particles)"},
+      {"curvature_map.mean_target", "1/m^2"},
+      {"curvature_map.mean_measured", "1/m^2"},
       {"curvature_map.margin", "mm (the interior lies this far from the edge)"},
       {"curvature_map.reached", "1 (share of the map the computed lengths carry)"},
-      {"curvature.max_density", "1/mm^2"},
+      {"curvature.max_density", "1/m^2"},
       {"shape.bbox_min", "mm"},
       {"shape.bbox_max", "mm"},
+      {"shape.size", "mm (the posed form's overall length along x, width along y, height along z)"},
       {"levels.wall_seconds", "s (the grid's solves)"},
       {"branches.height", "mm (as shape.height, of the branch's form)"},
       {"branches.global_height", "mm"},
       {"branches.total_K", "rad (as curvature.total)"},
       {"branches.total_K_global", "rad (as curvature.global.total)"},
       {"branches.energy", "J (as energy)"},
-      {"branches.quadric_k1", "1/mm (as shape.quadric.k1)"},
-      {"branches.quadric_k2", "1/mm (as shape.quadric.k2)"},
+      {"branches.quadric_k1", "1/m (as shape.quadric.k1)"},
+      {"branches.quadric_k2", "1/m (as shape.quadric.k2)"},
       {"branches.releases", "which releases ended in the form (0: the scene's own imperfection)"},
-      {"coordinates", "mm; x, y paper coordinates from the lower-left corner, z up"}};
+      {"coordinates",
+       "mm; when pose.posed, the reading pose: centred in x, y, the lowest point at z = 0, z up; "
+       "else the simulation's frame"},
+      {"pose.rotation", "1 (3 x 3, rows: the outputs' positions are rotation x + translation)"},
+      {"pose.translation", "mm"}};
 }
 
 json report_units() {

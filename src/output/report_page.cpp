@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sstream>
 
 #include "membra/core/readable_units.hpp"
@@ -18,14 +19,9 @@ namespace membra {
 namespace fs = std::filesystem;
 namespace {
 
-// The three.js files the page loads, as found in Debian's libjs-three and as named beside it.
-struct ScriptFile {
-  const char* source;  // under three_js_dir()
-  const char* name;    // under report_files/
-};
-constexpr ScriptFile kScripts[] = {{"three.min.js", "three.min.js"},
-                                   {"examples/js/loaders/GLTFLoader.js", "GLTFLoader.js"},
-                                   {"examples/js/controls/OrbitControls.js", "OrbitControls.js"}};
+// The three.js files the page inlines, as found in Debian's libjs-three.
+constexpr const char* kScripts[] = {"three.min.js", "examples/js/loaders/GLTFLoader.js",
+                                    "examples/js/controls/OrbitControls.js"};
 
 std::string read_text(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -64,8 +60,14 @@ constexpr Row kRows[] = {
      "of the global form, wrinkles averaged out"},
     {"Quadric", "/shape/quadric/classification", "text",
      "of the whole sheet's best-fit quadric (bowl: synclastic)"},
-    {"Quadric k1", "/shape/quadric/k1", "1/mm", "its larger principal curvature"},
-    {"Quadric k2", "/shape/quadric/k2", "1/mm", "radius 1/k; negative: a saddle"},
+    {"Size x", "/shape/size/0", "mm", "overall, in the reading pose (docs/outputs.md)"},
+    {"Size y", "/shape/size/1", "mm", "overall"},
+    {"Size z", "/shape/size/2", "mm", "overall: the piece's height on a table"},
+    {"Quadric radius 1", "/shape/quadric/radii_mm/0", "mm", "its more curved principal radius"},
+    {"Quadric radius 2", "/shape/quadric/radii_mm/1", "mm",
+     "negative: curving the other way, a saddle"},
+    {"Quadric k1", "/shape/quadric/k1", "1/m", "its larger principal curvature"},
+    {"Quadric k2", "/shape/quadric/k2", "1/m", "1/radius 2"},
     {"Height", "/shape/height", "mm", "rise of the sheet above its lowest point"},
     {"Global height", "/shape/global_height", "mm", "of the window-averaged form"},
     {"Total Gaussian curvature", "/curvature/total", "", "∫K dA (rad); 2π is a closed cap"},
@@ -111,7 +113,7 @@ std::string scale_html(const ColourScale& s, size_t index) {
     << "<div class=\"scale-title\">" << html_escape(s.title) << "</div><div class=\"bar\" "
     << "style=\"background: linear-gradient(to right";
   for (int i = 0; i <= 10; ++i) {
-    const Rgb c = colormap(s.lo + (s.hi - s.lo) * i / 10.0, s.lo, s.hi);
+    const Rgb c = colormap(s.lo + (s.hi - s.lo) * i / 10.0, s.lo, s.hi, s.map);
     const auto byte = [](float v) { return static_cast<int>(std::lround(v * 255.0f)); };
     h << ", rgb(" << byte(c.x()) << "," << byte(c.y()) << "," << byte(c.z()) << ")";
   }
@@ -139,6 +141,9 @@ h1 { margin-bottom: 0.2em; } .sub { color: #555; margin-top: 0; }
 .pictures figure { margin: 0; } .pictures img { width: 100%; border: 1px solid #eee; }
 .stencil svg { max-width: 100%; height: auto; border: 1px solid #eee; }
 #errors, .warning { color: #a00; white-space: pre-wrap; } .files li { font-family: monospace; }
+.inputs th { text-align: left; padding: 0.2em 0.8em 0.2em 0; vertical-align: top; }
+.inputs code { white-space: pre-wrap; word-break: break-all; font-size: 0.85em; }
+details pre { font-size: 0.8em; max-height: 24em; overflow: auto; background: #f7f7f7; }
 )";
 
 // The 3-D view: parses the inlined final.glb with three.js's GLTFLoader, turns membra's z-up
@@ -159,7 +164,7 @@ const char* kViewScript = R"(
   window.addEventListener('error', function (e) { fail(e.message); });
   window.addEventListener('unhandledrejection', function (e) { fail(e.reason); });
   if (typeof THREE === 'undefined' || !THREE.GLTFLoader || !THREE.OrbitControls) {
-    fail('3-D view: the scripts in report_files/ did not load (keep that folder beside the page)');
+    fail('3-D view: the inlined three.js did not load');
     return;
   }
   const canvas = document.getElementById('view-canvas');
@@ -248,6 +253,56 @@ const char* kViewScript = R"(
 })();
 )";
 
+// A pattern in a few words: "union of 25: 1 ellipse, 24 polygon".
+std::string pattern_summary(const nlohmann::json& p) {
+  if (!p.is_object() || p.empty()) return p.dump();
+  const std::string kind = p.begin().key();
+  const nlohmann::json& body = p.begin().value();
+  if ((kind != "union" && kind != "difference") || !body.is_array()) {
+    if (kind == "image" && body.is_object() && body.contains("file"))
+      return "image " + body["file"].get<std::string>();
+    return kind;
+  }
+  std::map<std::string, int> kinds;
+  for (const auto& part : body)
+    if (part.is_object() && !part.empty()) ++kinds[part.begin().key()];
+  std::string out = kind + " of " + std::to_string(body.size()) + ":";
+  for (const auto& [k, n] : kinds) out += " " + std::to_string(n) + " " + k + ",";
+  out.pop_back();
+  return out;
+}
+
+// The scene's inputs beside the results: the sheet, the model and its grid or mesh, the
+// simulation, each protocol step's settings (a pattern in a few words: the stencil below draws
+// it), and the whole scene as written.
+std::string inputs_html(const nlohmann::json& scene) {
+  if (!scene.is_object()) return "";
+  std::ostringstream h;
+  h << "<h2>Inputs</h2>\n<table class=\"inputs\">\n";
+  const auto row = [&](const std::string& label, const std::string& value) {
+    h << "<tr><th>" << html_escape(label) << "</th><td><code>" << html_escape(value)
+      << "</code></td></tr>\n";
+  };
+  row("model", scene.value("model", "lattice"));
+  for (const char* key : {"sheet", "mesh", "simulation"})
+    if (scene.contains(key)) row(key, scene[key].dump());
+  if (scene.contains("protocol"))
+    for (size_t i = 0; i < scene["protocol"].size(); ++i) {
+      nlohmann::json step = scene["protocol"][i];
+      const std::string kind = step.value("step", "?");
+      step.erase("step");
+      std::string pattern;
+      if (step.contains("pattern")) {
+        pattern = "; pattern: " + pattern_summary(step["pattern"]);
+        step.erase("pattern");
+      }
+      row(std::to_string(i + 1) + ". " + kind, step.dump() + pattern);
+    }
+  h << "</table>\n<details><summary>The whole scene (run it again with <code>membra run</code>)"
+    << "</summary><pre>" << html_escape(scene.dump(2)) << "</pre></details>\n";
+  return h.str();
+}
+
 std::string view_html(const ReportPage& page) {
   std::ostringstream h;
   h << "<div id=\"view\"><canvas id=\"view-canvas\"></canvas>\n<div class=\"controls\">Colour: ";
@@ -307,7 +362,9 @@ std::string base64(const std::vector<std::uint8_t>& bytes) {
   return out;
 }
 
-std::string make_report_page(const ReportPage& page, bool with_view, const std::string& note) {
+std::string make_report_page(const ReportPage& page, const std::vector<std::string>& scripts,
+                             const std::string& note) {
+  const bool with_view = !scripts.empty() && !page.glb.empty();
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
     << html_escape(page.title) << " — membra</title>\n<style>" << kStyle << "</style>\n</head>\n"
@@ -322,13 +379,13 @@ std::string make_report_page(const ReportPage& page, bool with_view, const std::
     h << view_html(page);
   else if (!note.empty())
     h << "<p class=\"note\">" << html_escape(note) << "</p>\n";
-  h << key_numbers(page.report) << "</div>\n";
+  h << key_numbers(page.report) << "</div>\n" << inputs_html(page.scene);
   if (!page.pictures.empty()) {
     h << "<h2>Pictures</h2>\n<div class=\"pictures\">\n";
     for (const auto& p : page.pictures) {
-      const std::string e = html_escape(p);
-      h << "<figure><a href=\"" << e << "\"><img src=\"" << e << "\" alt=\"" << e
-        << "\"></a><figcaption>" << e << "</figcaption></figure>\n";
+      const std::string e = html_escape(p.name);
+      h << "<figure><img src=\"data:image/png;base64," << base64(p.png) << "\" alt=\"" << e
+        << "\"><figcaption>" << e << "</figcaption></figure>\n";
     }
     h << "</div>\n";
   }
@@ -346,7 +403,12 @@ std::string make_report_page(const ReportPage& page, bool with_view, const std::
     h << "</ul>\n";
   }
   if (with_view) {
-    for (const auto& s : kScripts) h << "<script src=\"report_files/" << s.name << "\"></script>\n";
+    // Inlined: "</script" inside a script would end it early.
+    for (std::string js : scripts) {
+      for (size_t at = js.find("</script"); at != std::string::npos; at = js.find("</script", at))
+        js.replace(at, 2, "<\\/");
+      h << "<script>\n" << js << "\n</script>\n";
+    }
     h << "<script>const MEMBRA_GLB = \"" << base64(page.glb) << "\";\n"
       << kViewScript << "</script>\n";
   }
@@ -355,21 +417,20 @@ std::string make_report_page(const ReportPage& page, bool with_view, const std::
 }
 
 void stage_report_page(const ReportPage& page, OutputSet& out) {
-  bool with_view = !page.glb.empty();
-  std::string note = with_view ? "" : "No 3-D view: the run wrote no final.glb.";
+  std::string note = page.glb.empty() ? "No 3-D view: the run wrote no final.glb." : "";
+  std::vector<std::string> scripts;
   const fs::path dir = three_js_dir();
-  for (const auto& s : kScripts)
-    if (with_view && !fs::is_regular_file(dir / s.source)) {
-      with_view = false;
-      note = "No 3-D view: three.js was not found at " + (dir / s.source).string() +
+  for (const char* s : kScripts) {
+    if (page.glb.empty()) break;
+    if (!fs::is_regular_file(dir / s)) {
+      scripts.clear();
+      note = "No 3-D view: three.js was not found at " + (dir / s).string() +
              " (install Debian's libjs-three, or set MEMBRA_THREE_JS to its folder).";
+      break;
     }
-  if (with_view)
-    for (const auto& s : kScripts) {
-      const std::string js = read_text(dir / s.source);
-      out.add(std::string("report_files/") + s.name, [&](std::ostream& os) { os << js; });
-    }
-  const std::string html = make_report_page(page, with_view, note);
+    scripts.push_back(read_text(dir / s));
+  }
+  const std::string html = make_report_page(page, scripts, note);
   out.add("report.html", [&](std::ostream& os) { os << html; });
 }
 
@@ -390,12 +451,17 @@ ReportPage page_from_staged(const OutputSet& out, const std::string& title,
   if (const fs::path f = out.staged("pattern.svg"); !f.empty()) page.stencil_svg = read_text(f);
   // The pictures in the order a reader wants them: the form first, then the rest as staged
   // (branches/N/curvature.png among them); the frames are in the contact sheet.
-  for (const char* p : {"curvature.png", "curvature_global.png", "stress.png", "comparison.png",
-                        "comparison_density.png", "density.png", "curvature_map.png",
-                        "contact_sheet.png", "pattern.png"})
-    if (!out.staged(p).empty()) page.pictures.push_back(p);
+  for (const char* p : {"curvature.png", "views.png", "curvature_global.png", "stress.png",
+                        "comparison.png", "comparison_density.png", "density.png",
+                        "curvature_map.png", "contact_sheet.png", "pattern.png"})
+    if (!out.staged(p).empty()) page.pictures.push_back({p, {}});
   for (const auto& name : out.names())
-    if (name.starts_with("branches/") && name.ends_with(".png")) page.pictures.push_back(name);
+    if (name.starts_with("branches/") && name.ends_with(".png"))
+      page.pictures.push_back({name, {}});
+  for (PagePicture& p : page.pictures) {
+    const std::string bytes = read_text(out.staged(p.name));
+    p.png.assign(bytes.begin(), bytes.end());
+  }
   page.files = out.names();
   page.files.push_back("report.html");
   return page;

@@ -27,7 +27,7 @@ void stage_run_files(const Scene& scene, const RunResult& r, const RunStaging& s
     GlbSheet g{x,  mesh.triangles, s.curvature_rgb, s.stress_rgb, c.curvature, c.stress, {},
                uv, resin};
     g.extras["name"] = scene.name;
-    g.extras["curvature_range"] = {c.k_lo, c.k_hi};  // 1/mm^2, the colours' ends
+    g.extras["curvature_range"] = {c.k_lo, c.k_hi};  // 1/m^2, the colours' ends
     g.extras["stress_range"] = {c.s_lo, c.s_hi};     // MPa
     write_glb(os, g);
   });

@@ -6,6 +6,8 @@
 
 #include "membra/measure/global_curvature.hpp"
 #include "membra/measure/hole_edge.hpp"
+#include "membra/measure/quadric_fit.hpp"
+#include "membra/measure/reading_pose.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/forces.hpp"
 
@@ -71,12 +73,30 @@ void summarize_features(RunResult& r) {
   }
 }
 
+// The final state, its velocities and its frames turned into the reading pose, and the shape
+// measured again there (its box and z range are the posed piece's). A form still held, by pins
+// or against gravity, keeps the frame it hangs in.
+void pose_form(RunResult& r) {
+  State& s = r.prepared.membrane.state;
+  const Model& m = r.prepared.membrane.sheet.model;
+  if (m.gravity.squaredNorm() > 0.0) return;
+  for (int p = 0; p < m.num_particles(); ++p)
+    if (m.pinned(p)) return;
+  r.pose = reading_pose(s.x, fit_quadric(s.x, m.reference));
+  r.posed = true;
+  s.x = (r.pose.rotation * s.x).colwise() + r.pose.translation;
+  s.v = r.pose.rotation * s.v;
+  for (Frame& f : r.frames) f.x = (r.pose.rotation * f.x).colwise() + r.pose.translation;
+  r.shape = summarize_shape(s.x, m.reference);
+}
+
 }  // namespace
 
 void summarize_run(RunResult& r, const std::function<double(const Vec2&)>& curvature_field) {
   summarize_form(r);
   if (r.curvature_map) summarize_curvature_map(r, curvature_field);
   if (!r.features.empty()) summarize_features(r);
+  pose_form(r);
 }
 
 std::string form_line(const RunResult& r) {

@@ -27,14 +27,14 @@ void stage_density_picture(const DensityField& f, Renderer& renderer, OutputSet&
     const Vec2 corner[4] = {m - h, m + Vec2(h.x(), -h.y()), m + h, m + Vec2(-h.x(), h.y())};
     for (int k = 0; k < 4; ++k) {
       x.col(4 * c + k) = Vec3(corner[k].x(), corner[k].y(), 0.0);
-      colors.push_back(colormap(f.value[c], lo, hi));
+      colors.push_back(colormap(f.value[c], lo, hi, ColourMap::sequential));
     }
     tris.emplace_back(4 * c, 4 * c + 1, 4 * c + 2);
     tris.emplace_back(4 * c, 4 * c + 2, 4 * c + 3);
   }
   const Camera top{-90.0, 89.0, 1.1, false};
   const Legend legend{"Resin density per cell (0: bare latex, 1: resin), the frame from above", "",
-                      lo, hi};
+                      lo, hi, ColourMap::sequential};
   const auto png = encode_png(renderer.render(x, tris, colors, top, &legend));
   out.add("density.png", [png](std::ostream& os) {
     os.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
@@ -65,8 +65,9 @@ void stage_comparison(const TargetSurface& target, const Points& x,
   }
   const double hi = std::max(1e-3, error.max / units::mm);
   std::vector<Rgb> colors(static_cast<size_t>(nt), Rgb(0.8f, 0.8f, 0.8f));
-  for (double v : error.form_distance) colors.push_back(colormap(v / units::mm, 0.0, hi));
-  const Legend legend{title, "mm", 0.0, hi};
+  for (double v : error.form_distance)
+    colors.push_back(colormap(v / units::mm, 0.0, hi, ColourMap::sequential));
+  const Legend legend{title, "mm", 0.0, hi, ColourMap::sequential};
   const auto png = encode_png(renderer.render(both, tris, colors, cam, &legend));
   out.add(file, [png](std::ostream& os) {
     os.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));

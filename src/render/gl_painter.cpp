@@ -348,13 +348,41 @@ void GlPainter::colour_bar(const Legend& legend, float x0, float x1, float top, 
   for (int i = 0; i < steps; ++i) {
     const float fa = static_cast<float>(i) / steps, fb = static_cast<float>(i + 1) / steps;
     const float ya = bottom - (bottom - top) * fa, yb = bottom - (bottom - top) * fb;
-    const Rgb ca = colormap(legend.lo + (legend.hi - legend.lo) * fa, legend.lo, legend.hi);
-    const Rgb cb = colormap(legend.lo + (legend.hi - legend.lo) * fb, legend.lo, legend.hi);
+    const Rgb ca =
+        colormap(legend.lo + (legend.hi - legend.lo) * fa, legend.lo, legend.hi, legend.map);
+    const Rgb cb =
+        colormap(legend.lo + (legend.hi - legend.lo) * fb, legend.lo, legend.hi, legend.map);
     corners.insert(corners.end(), {Vec3(x0, ya, 0), Vec3(x1, ya, 0), Vec3(x1, yb, 0),
                                    Vec3(x0, ya, 0), Vec3(x1, yb, 0), Vec3(x0, yb, 0)});
     colors.insert(colors.end(), {ca, ca, cb, ca, cb, cb});
   }
   pixel_triangles(corners, colors, width, height);
+}
+
+void GlPainter::scale_bar(double pixels_per_metre, int width, int height) {
+  if (!(pixels_per_metre > 0.0)) return;
+  const double want_mm = 0.2 * width / pixels_per_metre * 1e3;
+  const double decade = std::pow(10.0, std::floor(std::log10(want_mm)));
+  double mm = decade;
+  for (double step : {2.0, 5.0, 10.0})
+    if (step * decade <= want_mm) mm = step * decade;
+  const float px = text_size(height);
+  const float len = static_cast<float>(mm * 1e-3 * pixels_per_metre);
+  const float x0 = 1.2f * px, bottom = static_cast<float>(height) - 1.2f * px;
+  const float top = bottom - 0.35f * px;
+  const Rgb ink(0.15f, 0.15f, 0.15f);
+  std::vector<Vec3> corners;
+  const auto box = [&](float a, float b, float y0, float y1) {
+    corners.insert(corners.end(), {Vec3(a, y0, 0), Vec3(b, y0, 0), Vec3(b, y1, 0), Vec3(a, y0, 0),
+                                   Vec3(b, y1, 0), Vec3(a, y1, 0)});
+  };
+  box(x0, x0 + len, top, bottom);                     // the bar
+  box(x0, x0 + 0.15f * px, top - 0.5f * px, bottom);  // its end ticks
+  box(x0 + len - 0.15f * px, x0 + len, top - 0.5f * px, bottom);
+  pixel_triangles(corners, std::vector<Rgb>(corners.size(), ink), width, height);
+  char label[32];
+  std::snprintf(label, sizeof label, "%g mm", mm);
+  text(label, x0, top - 1.8f * px, px, ink, width, height);
 }
 
 }  // namespace membra

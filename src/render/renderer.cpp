@@ -96,7 +96,9 @@ Renderer::~Renderer() {
   impl_->painter.reset();  // its GL names belong to the context
   eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   if (impl_->context != EGL_NO_CONTEXT) eglDestroyContext(impl_->display, impl_->context);
-  eglTerminate(impl_->display);
+  // No eglTerminate: every renderer of the process gets the same display, and terminating it
+  // would break the others still drawing (a run's panels are drawn while its main renderer
+  // lives). The display is released at exit.
 }
 
 namespace {
@@ -180,6 +182,9 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
   glEnable(GL_DEPTH_TEST);
   r.painter->mesh(x, tris, colors, vp, rotf);
   glDisable(GL_DEPTH_TEST);
+  // The projection maps half_height world units to half the form's band of framebuffer rows.
+  if (cam.scale_bar && x.cols())
+    r.painter->scale_bar(mesh_h * fh / (2.0 * orbit.half_height), fw, fh);
   if (legend) r.painter->legend(*legend, fw, fh);
   if (!title.empty()) r.painter->heading(title, fw, fh);
   return downsample(read_pixels(fw, fh), r.ss);

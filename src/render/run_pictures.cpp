@@ -1,6 +1,7 @@
 #include "membra/render/run_pictures.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 
@@ -32,7 +33,7 @@ void paint_curvature_map(const RunResult& r, const RunStaging& s, const Camera& 
        panel.render(mesh.model.reference, mesh.triangles, s.measured.rgb, flat, nullptr,
                     "Measured, on the flat sheet"),
        pw, 0);
-  const Legend legend{"Gaussian curvature", "1/mm^2", s.target.lo, s.target.hi};
+  const Legend legend{"Gaussian curvature", "1/m^2", s.target.lo, s.target.hi, s.options.colormap};
   blit(side,
        panel.render(r.prepared.membrane.state.x, mesh.triangles, s.measured.rgb, camera, &legend,
                     "Form"),
@@ -44,7 +45,8 @@ void paint_curvature_map(const RunResult& r, const RunStaging& s, const Camera& 
 void paint_frames(const RunResult& r, const RunStaging& s, const Camera& camera, Renderer& renderer,
                   OutputSet& out) {
   const auto& mesh = r.prepared.membrane.sheet;
-  const Legend legend{"Stress (tension red)", "MPa", s.frames[0].lo, s.frames[0].hi};
+  const Legend legend{"Stress (tension red)", "MPa", s.frames[0].lo, s.frames[0].hi,
+                      s.options.colormap};
   const int cols = std::min<int>(6, static_cast<int>(r.frames.size()));
   const int rows = (static_cast<int>(r.frames.size()) + cols - 1) / cols;
   const int tw = 400, th = 300;
@@ -68,7 +70,7 @@ void paint_global_form(const RunResult& r, const RunStaging& s, const Camera& ca
                        Renderer& renderer, OutputSet& out) {
   if (s.global_form.cols() == 0) return;
   const Legend legend{"Global form: Gaussian curvature, averaged over 1/4 of the sheet across",
-                      "1/mm^2", s.global.lo, s.global.hi};
+                      "1/m^2", s.global.lo, s.global.hi, s.options.colormap};
   add_png(out, "curvature_global.png",
           renderer.render(s.global_form, r.prepared.membrane.sheet.triangles, s.global.rgb, camera,
                           &legend));
@@ -79,12 +81,56 @@ void paint_branches(const RunResult& r, const RunStaging& s, const Camera& camer
                     Renderer& renderer, OutputSet& out) {
   for (size_t b = 0; b < r.branches.size(); ++b) {
     const RunResult& f = r.branches[b].run;
-    const Legend legend{"Branch " + std::to_string(b + 1) + ": Gaussian curvature", "1/mm^2",
-                        s.branches[b].lo, s.branches[b].hi};
+    const Legend legend{"Branch " + std::to_string(b + 1) + ": Gaussian curvature", "1/m^2",
+                        s.branches[b].lo, s.branches[b].hi, s.options.colormap};
     add_png(out, "branches/" + std::to_string(b + 1) + "/curvature.png",
             renderer.render(f.prepared.membrane.state.x, f.prepared.membrane.sheet.triangles,
                             s.branches[b].rgb, camera, &legend));
   }
+}
+
+// The posed form's overall size, "218 x 163 x 81 mm" (its box along x, y and z), and the best-fit
+// quadric's principal radii where it describes the form ("radii 92 / 174 mm").
+std::string dimensions(const RunResult& r) {
+  const Vec3 size = (r.shape.bbox_max - r.shape.bbox_min) * 1e3;
+  char text[160];
+  int n = std::snprintf(text, sizeof text, "%.0f \u00d7 %.0f \u00d7 %.0f mm", size.x(), size.y(),
+                        size.z());
+  const QuadricFit& q = r.shape.quadric;
+  if (q.valid && q.classification != "flat" && q.classification != "folded") {
+    const auto radius = [](double k) { return std::abs(k) < 1e-3 ? 0.0 : 1e3 / k; };
+    if (q.classification == "cylindrical")
+      std::snprintf(text + n, sizeof text - n, ", radius %.0f mm", radius(q.k1));
+    else
+      std::snprintf(text + n, sizeof text - n, ", radii %.0f / %.0f mm", radius(q.k1),
+                    radius(q.k2));
+  }
+  return text;
+}
+
+// The form three ways, as a drawing shows a piece (docs/outputs.md, "The pose"): the 3/4 view
+// of the other pictures, and orthographic views from the top and from the front (-y), each with
+// its dimensions and a scale bar.
+// Drawn with the run's renderer, at its size (three panels side by side).
+void paint_views(const RunResult& r, const RunStaging& s, const Camera& camera, Renderer& panel,
+                 int pw, int ph, OutputSet& out) {
+  const auto& x = r.prepared.membrane.state.x;
+  const auto& tris = r.prepared.membrane.sheet.triangles;
+  const Vec3 size = (r.shape.bbox_max - r.shape.bbox_min) * 1e3;
+  Image views = blank_image(3 * pw, ph);
+  char top[64], side[64];
+  std::snprintf(top, sizeof top, "Top: %.0f \u00d7 %.0f mm", size.x(), size.y());
+  std::snprintf(side, sizeof side, "Front: %.0f \u00d7 %.0f mm", size.x(), size.z());
+  const bool fixed = s.options.curvature_range.size() == 2;
+  const Legend legend{fixed ? "Gaussian curvature" : "Gaussian curvature (95% in range)", "1/m^2",
+                      s.colors.k_lo, s.colors.k_hi, s.options.colormap};
+  blit(views, panel.render(x, tris, s.curvature_rgb, camera, nullptr, "3/4 view: " + dimensions(r)),
+       0, 0);
+  Camera from_top{-90.0, 90.0, 1.15, false, true};
+  blit(views, panel.render(x, tris, s.curvature_rgb, from_top, nullptr, top), pw, 0);
+  Camera from_front{-90.0, 0.0, 1.15, false, true};
+  blit(views, panel.render(x, tris, s.curvature_rgb, from_front, &legend, side), 2 * pw, 0);
+  add_png(out, "views.png", views);
 }
 
 }  // namespace
@@ -103,15 +149,18 @@ std::string stage_run_pictures(const Scene& scene, const RunResult& r, const Run
     Renderer renderer(o.image_width, o.image_height);
     auto picture = [&](const std::string& file, const std::vector<Rgb>& colors,
                        const Legend& legend) {
-      add_png(out, file, renderer.render(x, mesh.triangles, colors, camera, &legend));
+      add_png(out, file,
+              renderer.render(x, mesh.triangles, colors, camera, &legend, dimensions(r)));
     };
     const bool fixed = s.options.curvature_range.size() == 2;
     picture("curvature.png", s.curvature_rgb,
-            {fixed ? "Gaussian curvature" : "Gaussian curvature (95% in range)", "1/mm^2", c.k_lo,
-             c.k_hi});
+            {fixed ? "Gaussian curvature" : "Gaussian curvature (95% in range)", "1/m^2", c.k_lo,
+             c.k_hi, s.options.colormap});
+    paint_views(r, s, camera, renderer, o.image_width, o.image_height, out);
     paint_global_form(r, s, camera, renderer, out);
     paint_branches(r, s, camera, renderer, out);
-    picture("stress.png", s.stress_rgb, {"Stress (tension red)", "MPa", c.s_lo, c.s_hi});
+    picture("stress.png", s.stress_rgb,
+            {"Stress (tension red)", "MPa", c.s_lo, c.s_hi, s.options.colormap});
     if (r.curvature_map) paint_curvature_map(r, s, camera, out);
     if (!r.frames.empty()) paint_frames(r, s, camera, renderer, out);
   } catch (const RenderError& e) {

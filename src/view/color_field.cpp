@@ -44,11 +44,10 @@ ColorField color_field(const ViewerSession& session, ColorMode mode) {
       GaussianCurvature k = gaussian_curvature(x, m.sheet.triangles);
       if (session.scene().benchmark_n == 0 && !m.sheet.continuum())
         smooth_density_on_grid(m.sheet.grid, k);
-      f.values = k.density;
-      for (double& v : f.values) v *= units::mm * units::mm;
-      std::tie(f.lo, f.hi) = symmetric_range(f.values, 1e-12);
+      f.values = k.density;  // 1/m^2, the unit every output shows
+      std::tie(f.lo, f.hi) = symmetric_range(f.values, 1e-6);
       f.title = "Gaussian curvature";
-      f.unit = "1/mm^2";
+      f.unit = "1/m^2";
       break;
     }
     case ColorMode::pattern: {

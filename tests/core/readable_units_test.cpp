@@ -6,20 +6,22 @@
 namespace membra {
 namespace {
 
-TEST(ReadableUnits, CurvatureInPerSquareMetreUnlessVerySharp) {
-  // 6.3e-6 1/mm^2 (a radius of 0.4 m) reads as 6.3 1/m^2.
+// One unit per quantity, whatever the values' size (docs/outputs.md, "Units").
+TEST(ReadableUnits, CurvatureIsAlwaysInPerSquareMetre) {
+  // 6.3e-6 1/mm^2 (a radius of 0.4 m) reads as 6.3 1/m^2; so does a sharp 0.02 1/mm^2.
   const DisplayUnit u = readable_unit("1/mm^2", 6.3e-6);
   EXPECT_EQ(u.unit, "1/m²");
   EXPECT_EQ(format_number(6.3e-6 * u.factor, 1.0), "6.3");
-  // A radius below 1 cm stays in 1/mm^2.
-  EXPECT_EQ(readable_unit("1/mm^2", 0.02).unit, "1/mm²");
+  EXPECT_EQ(readable_unit("1/mm^2", 0.02).unit, "1/m²");
+  EXPECT_EQ(readable_unit("1/m^2", 2e4).unit, "1/m²");
+  EXPECT_DOUBLE_EQ(readable_unit("1/m^2", 2e4).factor, 1.0);
 }
 
-TEST(ReadableUnits, StressFallsToKilopascalAndPascal) {
-  EXPECT_EQ(readable_unit("MPa", 1.2).unit, "MPa");
-  EXPECT_EQ(readable_unit("MPa", 4.2e-4).unit, "kPa");
-  EXPECT_DOUBLE_EQ(readable_unit("MPa", 4.2e-4).factor, 1e3);
-  EXPECT_EQ(readable_unit("MPa", 2e-5).unit, "Pa");
+TEST(ReadableUnits, StressIsAlwaysInMegapascal) {
+  for (double v : {1.2, 4.2e-4, 2e-5}) {
+    EXPECT_EQ(readable_unit("MPa", v).unit, "MPa") << v;
+    EXPECT_DOUBLE_EQ(readable_unit("MPa", v).factor, 1.0) << v;
+  }
   EXPECT_EQ(readable_unit("N/mm^2", 1.0).unit, "N/mm²");
 }
 
@@ -39,10 +41,10 @@ TEST(ReadableUnits, TicksOfTheLegendThatWasCutOff) {
   EXPECT_EQ(t.labels.front(), "\u221218.8");
   EXPECT_EQ(t.labels[2], "0.0");
   EXPECT_EQ(t.labels.back(), "18.8");
-  // A stress legend of 6.32e-6 MPa reads in Pa.
-  const Ticks s = readable_ticks(-6.32e-6, 6.32e-6, "MPa", 5);
-  EXPECT_EQ(s.unit, "Pa");
-  EXPECT_EQ(s.labels.back(), "6.3");
+  // A stress legend of 4.2e-4 MPa stays in MPa, with the digits it needs.
+  const Ticks s = readable_ticks(-4.2e-4, 4.2e-4, "MPa", 5);
+  EXPECT_EQ(s.unit, "MPa");
+  EXPECT_EQ(s.labels.back(), "0.00042");
 }
 
 }  // namespace

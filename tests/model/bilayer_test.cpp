@@ -168,7 +168,10 @@ double row_curvature(const Membrane& m, int i) {
   const Vec3 p0 = x.col(g.particle(i - 5, j)), p1 = x.col(g.particle(i, j)),
              p2 = x.col(g.particle(i + 5, j));
   const double c = circle_curvature(p0, p1, p2);
-  return p1.z() > 0.5 * (p0.z() + p2.z()) ? c : -c;
+  // Signed by the sheet's own top face (x cross y of the grid), not the world's z: a run's form
+  // is turned into its reading pose, concave side up, whichever face it curls towards.
+  const Vec3 top = (p2 - p0).cross(x.col(g.particle(i, j + 1)) - x.col(g.particle(i, j - 1)));
+  return (p1 - 0.5 * (p0 + p2)).dot(top) > 0.0 ? c : -c;
 }
 
 // The largest turning angle between consecutive segments of the middle row: a crease shows as

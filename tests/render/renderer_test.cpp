@@ -29,10 +29,11 @@ TEST(Renderer, ShadedMeshAndLegendUseTheColourMap) {
     const auto [i, j] = g.node(p);
     const Vec2 q = g.position(i, j);
     x.col(p) = Vec3(q.x(), q.y(), 0.02 * std::sin(10.0 * q.x()));
-    colors.push_back(colormap(q.x(), 0.0, 0.2));  // blue on the left, red on the right
+    colors.push_back(
+        colormap(q.x(), 0.0, 0.2, ColourMap::paper));  // blue on the left, red on the right
   }
   Renderer renderer(640, 480);
-  const Legend legend{"test", "m", 0.0, 0.2};
+  const Legend legend{"test", "m", 0.0, 0.2, ColourMap::paper};
   Camera camera;
   camera.shadow = false;  // only map colours and the text's grey (the shadow: its own test)
   const Image img = renderer.render(x, tris, colors, camera, &legend);
@@ -98,7 +99,7 @@ TestSheet test_sheet(double bump) {
     const auto [i, j] = g.node(p);
     const Vec2 q = g.position(i, j);
     s.x.col(p) = Vec3(q.x(), q.y(), bump * std::sin(10.0 * q.x()));
-    s.colors.push_back(colormap(q.x(), 0.0, 0.2));
+    s.colors.push_back(colormap(q.x(), 0.0, 0.2, ColourMap::paper));
   }
   return s;
 }
@@ -177,6 +178,28 @@ TEST(Renderer, SoftShadowOnTheGround) {
   EXPECT_GT(with, 500);
   EXPECT_GT(levels, 8);  // a soft penumbra, not one flat grey
   EXPECT_LT(without, 50);
+}
+
+}  // namespace
+}  // namespace membra
+
+namespace membra {
+namespace {
+
+// A run draws its panels with a second renderer while the first lives on: ending the second
+// must not end the first's display (every picture after views.png came out black).
+TEST(Renderer, ASecondRendererEndingLeavesTheFirstDrawing) {
+  const TestSheet s = test_sheet(0.02);
+  Renderer first(160, 120);
+  {
+    Renderer second(80, 60);
+    (void)second.render(s.x, s.tris, s.colors, Camera{}, nullptr);
+  }
+  const Image img = first.render(s.x, s.tris, s.colors, Camera{}, nullptr);
+  int white = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) white += img.pixel(x, y).minCoeff() > 0.97f;
+  EXPECT_GT(white, img.width * img.height / 4);  // the white background, not a black frame
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 #pragma once
-// Numbers as a reader wants them on a legend or a report page: curvature in 1/m² rather than
-// 6.3e-06 1/mm², a small stress in kPa rather than 0.00042 MPa, and the digits the spacing of
-// the values calls for. Pure functions (headers only), shared by the pictures and report.html.
+// Numbers as a reader wants them on a legend or a report page: one unit per quantity everywhere
+// (docs/outputs.md, "Units": Gaussian curvature in 1/m², stress in MPa), with the digits the
+// spacing of the values calls for. Pure functions (headers only), shared by the pictures, the
+// viewer and report.html.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,16 +17,12 @@ struct DisplayUnit {
   std::string unit;
 };
 
-// The readable unit for values of magnitude up to `max_abs` given in `unit`. Knows curvature
-// ("1/mm^2": 1/m² up to 1e4 1/m², a radius of 1 cm; 1/mm² beyond), stress ("MPa": MPa from 0.1
-// MPa, kPa from 0.1 kPa, Pa below) and lengths ("mm"); other units are kept, with ^2 shown as ².
+// The unit to show values given in `unit` in: Gaussian curvature always in 1/m² (given in
+// "1/m^2" or "1/mm^2"), stress in MPa, lengths as given; ^2 is shown as ². (`max_abs` is kept for
+// callers; one unit per quantity means it no longer picks one.)
 inline DisplayUnit readable_unit(const std::string& unit, double max_abs) {
-  if (unit == "1/mm^2")
-    return max_abs * 1e6 < 1e4 ? DisplayUnit{1e6, "1/m²"} : DisplayUnit{1.0, "1/mm²"};
-  if (unit == "MPa") {
-    if (max_abs >= 0.1) return {1.0, "MPa"};
-    return max_abs * 1e3 >= 0.1 ? DisplayUnit{1e3, "kPa"} : DisplayUnit{1e6, "Pa"};
-  }
+  (void)max_abs;
+  if (unit == "1/mm^2") return {1e6, "1/m²"};
   std::string shown;
   for (size_t i = 0; i < unit.size(); ++i) {
     const bool squared = unit[i] == '^' && i + 1 < unit.size() && unit[i + 1] == '2';

@@ -2,7 +2,7 @@
 // Binary glTF 2.0 (.glb) of a coloured sheet, for Blender, three.js and any other glTF viewer:
 // positions in metres (glTF's unit) with glTF's y up, smooth normals, the flat sheet as
 // TEXCOORD_0, the curvature colours as COLOR_0 (shown by default), the stress colours as COLOR_1,
-// the values themselves as the custom attributes _CURVATURE (1/mm^2) and _STRESS (MPa), and the
+// the values themselves as the custom attributes _CURVATURE (1/m^2) and _STRESS (MPa), and the
 // triangles split into two primitives by material, "latex" and "resin" (docs/outputs.md).
 // Written and read with tinygltf (Debian's libtinygltf-dev).
 #include <filesystem>
@@ -22,7 +22,7 @@ struct GlbSheet {
   Points x;  // m (written in mm)
   std::vector<Triangle> triangles;
   std::vector<Rgb> curvature_colors, stress_colors;  // sRGB, as in the pictures
-  std::vector<double> curvature, stress;             // 1/mm^2, MPa
+  std::vector<double> curvature, stress;             // 1/m^2, MPa
   nlohmann::json extras;    // merged into the asset's extras (names, colour ranges)
   std::vector<Vec2> uv;     // per vertex, the flat sheet (flat_uv); empty: no TEXCOORD_0
   std::vector<bool> resin;  // per triangle; empty: all latex

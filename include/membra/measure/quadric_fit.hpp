@@ -18,6 +18,11 @@ struct QuadricFit {
   // a quadric can describe (k L > 2 over the fit's half-width L at the centre, or that half-width
   // under a third of the paper's): k1, k2 and rms are then the fit's, not the form's.
   std::string classification;
+  // The fitted surface at the paper's centroid: its point (m), its unit normal (turned as k1
+  // and k2 are: the side the form opens towards), the unit principal directions of k1 and k2,
+  // and the unit tangent along the paper's x axis (measure/reading_pose.hpp poses by them).
+  Vec3 centre = Vec3::Zero(), normal = Vec3::UnitZ();
+  Vec3 d1 = Vec3::UnitX(), d2 = Vec3::UnitY(), paper_x = Vec3::UnitX();
 };
 
 // Fits each coordinate of x (3 x N, m) by a quadratic polynomial of the paper coordinates

@@ -15,8 +15,9 @@ namespace membra {
 
 // Colour ranges the user fixed (`--curvature-range`, `--stress-range`).
 struct PictureOptions {
-  std::vector<double> curvature_range;  // [lo, hi] in 1/mm^2, or empty for automatic
-  std::vector<double> stress_range;     // [lo, hi] in MPa, or empty for automatic
+  std::vector<double> curvature_range;        // [lo, hi] in 1/m^2, or empty for automatic
+  std::vector<double> stress_range;           // [lo, hi] in MPa, or empty for automatic
+  ColourMap colormap = ColourMap::diverging;  // the scene's output.colormap (staging sets it)
 };
 
 // The share of the particles' |K| the default curvature colour range covers: the rest, sharp
@@ -25,15 +26,15 @@ inline constexpr double kCurvaturePercentile = 0.95;
 
 // A run's values per particle in the outputs' units, and the colour ranges: symmetric about 0,
 // so that green is flat / unstressed (curvature: kCurvaturePercentile of |K|, at least +-1e-6
-// 1/mm^2, radius 1 m; stress: every value, at least +-1e-3 MPa), unless the user fixed them.
+// 1/m^2, radius 1 m; stress: every value, at least +-1e-3 MPa), unless the user fixed them.
 struct RunColors {
-  std::vector<double> curvature;  // 1/mm^2
+  std::vector<double> curvature;  // 1/m^2
   std::vector<double> stress;     // MPa
   double k_lo = 0.0, k_hi = 0.0, s_lo = 0.0, s_hi = 0.0;
 };
 RunColors run_colors(const RunResult& r, const PictureOptions& opts);
 // The two colourings of final.glb (curvature, stress) for report.html's legends.
-std::vector<ColourScale> run_scales(const RunColors& c);
+std::vector<ColourScale> run_scales(const RunColors& c, ColourMap map);
 
 // A colouring of values on one range (the range is its legend's).
 struct Colouring {

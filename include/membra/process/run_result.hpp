@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "membra/geometry/rigid_fit.hpp"
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/shape.hpp"
 #include "membra/measure/stress.hpp"
@@ -72,6 +73,11 @@ struct RunResult {
   StressRanges stress;                // over the elements, for the sheet's thickness
   std::vector<double> vertex_stress;  // Pa, per particle (measure/stress.hpp), final state
   std::vector<Frame> frames;          // scene.output.frames instants (dynamic solves, release path)
+  // The motion that placed the final state, its frames included, in the reading pose
+  // (measure/reading_pose.hpp) after the energies and the stability were measured: positions
+  // are R x + t of the simulation's. Identity for a form still held (pins or gravity).
+  RigidMotion pose;
+  bool posed = false;
   std::vector<StressFeature> features;              // the cuts and holes, in step order
   std::vector<StressConcentration> concentrations;  // stress at each feature, final state
   std::optional<CurvatureMapResult> curvature_map;  // scenes with a curvature_map step

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "membra/geometry/grid_sheet.hpp"
+#include "membra/measure/colormap.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/sheet.hpp"
 #include "membra/process/protocol.hpp"
@@ -58,6 +59,7 @@ struct OutputSpec {
   double azimuth = -60.0;   // camera, degrees around +z from +x
   double elevation = 35.0;  // camera, degrees above the sheet
   int image_width = 1200, image_height = 900;
+  ColourMap colormap = ColourMap::diverging;  // of curvature and stress (measure/colormap.hpp)
 };
 
 // Which model of the sheet a scene simulates (docs/model.md): the paper's particle-spring

@@ -16,8 +16,9 @@ namespace membra {
 // A colour bar: the map's range and what it shows.
 struct Legend {
   std::string title;  // e.g. "Gaussian curvature"
-  std::string unit;   // the unit of lo and hi, e.g. "1/mm^2"; shown in a readable one
+  std::string unit;   // the unit of lo and hi, e.g. "1/m^2"; shown in a readable one
   double lo = 0.0, hi = 1.0;
+  ColourMap map = ColourMap::diverging;
 };
 
 class GlPainter {
@@ -55,6 +56,10 @@ class GlPainter {
   // unit above it, in the right fifth of the viewport below the heading band; the labels shrink
   // rather than leave the viewport.
   void legend(const Legend& legend, int width, int height);
+  // A scale bar at the bottom-left: a round length (1, 2 or 5 times a power of ten, in mm) about
+  // a fifth of the viewport wide, for a view that shows `pixels_per_metre` (orthographic views
+  // only: a perspective or a slanted view has no one scale).
+  void scale_bar(double pixels_per_metre, int width, int height);
   // The pictures' text height for a viewport `height` pixels high (1/34 of it, at least 9 and at
   // most 64 image pixels), and the band the heading takes.
   float text_size(int height) const;

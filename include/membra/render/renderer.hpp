@@ -26,8 +26,9 @@ class RenderError : public std::runtime_error {
 struct Camera {
   double azimuth = -60.0;
   double elevation = 35.0;
-  double margin = 1.1;  // the form's extent as seen fills 1/margin of the picture
-  bool shadow = true;   // a soft shadow on the ground below the form
+  double margin = 1.1;     // the form's extent as seen fills 1/margin of the picture
+  bool shadow = true;      // a soft shadow on the ground below the form
+  bool scale_bar = false;  // a scale bar in mm (for views straight along an axis)
 };
 
 // An RGB image, rows from the top.

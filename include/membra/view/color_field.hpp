@@ -23,7 +23,7 @@ struct ColorField {
 };
 
 // stress: mean spring stress at each particle, MPa (tension > 0, red; compression blue).
-// curvature: Gaussian curvature density (angle defect / area, smoothed), 1/mm^2.
+// curvature: Gaussian curvature density (angle defect / area, smoothed), 1/m^2.
 // pattern: share of resin (0 latex .. 1 resin): of the particle's springs once impregnated,
 // of the pending brush/scene pattern at the particle before.
 ColorField color_field(const ViewerSession& session, ColorMode mode);
