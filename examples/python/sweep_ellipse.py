@@ -34,7 +34,7 @@ def main():
         spec["grid"][key] = spec["grid"][key][:args.values]
     table = membra.sweep(spec, out=args.out, scheduler=args.scheduler)
 
-    rx, ry = (f"protocol.1.pattern.union.0.ellipse.radii.{i}" for i in (0, 1))
+    rx, ry = "radius_x", "radius_y"  # the columns' names: the sweep file's "labels"
     ok = table[table["error"] == ""]
     best = ok.sort_values("global_height", ascending=False).head(5)
     print("deepest bowls (radii in mm, heights in mm, total K in rad):")

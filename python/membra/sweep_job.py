@@ -61,15 +61,31 @@ def _run(job, folder):
         spec = _membra.parse_design(text, str(Path(job["file"]).parent))
         result = DesignResult(_membra.design(spec, None))
         result.write(folder)
+        _save_form(folder, result)
         row = _measures(result.report)
         row["design_error"] = result.rms_error
         return row
     scene = Scene(job["file"], set=job["sets"])
     result = Result(_membra.run(scene._native, None), scene)
     result.write(folder)
+    _save_form(folder, result)
     row = _measures(result.report)
     row["design_error"] = math.nan
     return row
+
+
+def _save_form(folder, result):
+    """The posed form as numbers (form.npz: positions mm, triangles, gaussian_curvature 1/m^2),
+    for the contact sheet to draw every job on one colour range and one scale."""
+    import numpy as np
+
+    if getattr(result, "diverged", False):
+        return
+    # A design's result has no curvature per particle: its form is drawn white.
+    k = getattr(result, "gaussian_curvature", None)
+    np.savez_compressed(folder / "form.npz", positions=result.positions,
+                        triangles=result.triangles,
+                        gaussian_curvature=np.zeros(len(result.positions)) if k is None else k)
 
 
 def run_job(job, out):
@@ -77,10 +93,11 @@ def run_job(job, out):
     is a row with its error; it never raises, so that one bad scene loses no sweep."""
     folder = job_dir(out, job)
     # An earlier run's row goes first: if this run fails, no stale success is resumed from it.
-    try:
-        (folder / ROW_FILE).unlink()
-    except FileNotFoundError:
-        pass
+    for stale in (ROW_FILE, "form.npz"):  # nor a stale form drawn for a failed rerun
+        try:
+            (folder / stale).unlink()
+        except FileNotFoundError:
+            pass
     start = time.perf_counter()
     row = {"id": job["id"], **job["params"]}
     try:

@@ -35,7 +35,7 @@ td img { height: 90px; display: block; } .failed { color: #a00; } .note { color:
 """
 
 _UNITS = {"height": "mm", "global_height": "mm", "total_K": "rad", "total_K_global": "rad",
-          "quadric_k1": "1/mm", "quadric_k2": "1/mm", "design_error": "%", "wall_seconds": "s"}
+          "quadric_k1": "1/m", "quadric_k2": "1/m", "design_error": "%", "wall_seconds": "s"}
 
 
 def _cell(value):
@@ -62,7 +62,9 @@ def write_sweep_page(table, params, out, title):
              f'<p class="note">{len(table)} scenes, {failed} failed. Click a heading to sort; a '
              'picture opens the scene\'s own page. Every number is also in '
              '<a href="results.csv">results.csv</a>; all pictures in '
-             '<a href="contact_sheet.png">contact_sheet.png</a>.</p>',
+             '<a href="contact_sheet.png">contact_sheet.png</a> (one colour range and scale), each '
+             'parameter against the form in <a href="parameters.png">parameters.png</a>, the '
+             'short column names\' paths in <a href="parameters.json">parameters.json</a>.</p>',
              "<table><thead><tr><th>form</th>"]
     for c in columns:
         unit = _UNITS.get(c)

@@ -9,7 +9,8 @@ A sweep file (JSON), or the same as a dict::
       "grid": {"protocol.1.pattern.union.0.ellipse.radii.0": [100, 120],
                "protocol.1.pattern.union.0.ellipse.radii.1": [60, 80]},   # every combination
       "list": [{"simulation.solver": "newton"}, ...], # or: these parameter sets, one job each
-      "scenes": ["a.json", "b.json"]                  # or: these scene files, one job each
+      "scenes": ["a.json", "b.json"],                 # or: these scene files, one job each
+      "labels": {"protocol.1.pattern.union.0.ellipse.radii.0": "width"}  # short column names
     }
 
 Paths in the file are relative to the file. `grid` and `list` combine: each list entry is
@@ -25,7 +26,7 @@ from pathlib import Path
 
 from ._membra import SceneError
 
-KNOWN_KEYS = {"name", "description", "scene", "design", "set", "grid", "list", "scenes"}
+KNOWN_KEYS = {"name", "description", "scene", "design", "set", "grid", "list", "scenes", "labels"}
 
 
 MAX_JOBS = 100_000
@@ -78,12 +79,16 @@ def _check(spec, where):
         raise _error(where, 'give exactly one of "scene", "design" or "scenes"')
     if "scenes" in spec and ("grid" in spec or "list" in spec):
         raise _error(f"{where}: /scenes", '"scenes" cannot be combined with "grid" or "list"')
-    for key, kind in (("set", dict), ("grid", dict), ("list", list), ("scenes", list)):
+    for key, kind in (("set", dict), ("grid", dict), ("list", list), ("scenes", list),
+                      ("labels", dict)):
         if key in spec and not isinstance(spec[key], kind):
             raise _error(f"{where}: /{key}", f"must be a JSON {'object' if kind is dict else 'array'}")
     for path, values in spec.get("grid", {}).items():
         if not isinstance(values, list) or not values:
             raise _error(f"{where}: /grid/{path}", "must be a non-empty array of values")
+    for path, label in spec.get("labels", {}).items():
+        if not (isinstance(label, str) and label.strip()):
+            raise _error(f"{where}: /labels/{path}", "must be a non-empty string: the column's name")
     for i, entry in enumerate(spec.get("list", [])):
         if not isinstance(entry, dict):
             raise _error(f"{where}: /list/{i}", "must be an object of path: value")
@@ -131,3 +136,34 @@ def _digest(file):
         return hashlib.sha256(Path(file).read_bytes()).hexdigest()
     except OSError:
         return None  # the job fails, as a row, when it runs
+
+
+def short_labels(params, labels=None, reserved=()):
+    """Column names for the varied parameters: the sweep file's `labels` where it gives one,
+    else each path's last segments, as few as keep its name apart from the others' and from the
+    `reserved` columns, and not a bare index ("radii.0", "radii.1", "solver" for
+    ...ellipse.radii.0, ...ellipse.radii.1 and simulation.solver). Raises SceneError for labels
+    that clash."""
+    labels = labels or {}
+    reserved = set(reserved)
+    given = [labels[p] for p in params if labels.get(p)]
+    for path in params:
+        label = labels.get(path)
+        if label and (label in reserved or given.count(label) > 1):
+            raise _error(f"sweep: /labels/{path}",
+                         f"the column name {label!r} is taken (by a result column or another label)")
+    depth = {p: 1 for p in params}
+
+    def name(p):
+        return labels.get(p) or ".".join(p.split(".")[-depth[p]:])
+
+    for _ in range(64):  # each round lengthens the names that clash
+        names = {p: name(p) for p in params}
+        clash = [p for p in params if not labels.get(p) and depth[p] <= p.count(".") and (
+            list(names.values()).count(names[p]) > 1 or names[p] in reserved
+            or names[p].split(".")[0].isdigit())]
+        if not clash:
+            return names
+        for p in clash:
+            depth[p] += 1
+    return {p: name(p) for p in params}

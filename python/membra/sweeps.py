@@ -10,6 +10,7 @@ Kubernetes, ...). Every worker must be able to `import membra` and to read the s
 write to `out` (a shared file system on a cluster).
 """
 
+import json
 import os
 import sys
 import time
@@ -17,7 +18,7 @@ import uuid
 from pathlib import Path
 
 from .sweep_job import finished_row, run_job
-from .sweep_spec import expand, load_sweep
+from .sweep_spec import expand, load_sweep, short_labels
 
 # The columns of the results table, after the varied parameters.
 COLUMNS = ["status", "converged", "stable", "height", "global_height", "total_K",
@@ -89,6 +90,9 @@ def sweep(spec, out, scheduler=None, workers=None, client=None, resume=True, con
 
     spec = load_sweep(spec)
     jobs = expand(spec)
+    # The varied parameters' columns under short names (the sweep file's "labels", else the
+    # paths' last segments), checked before anything runs; parameters.json maps them back.
+    labels = short_labels(_params(jobs), spec.get("labels"), reserved=["id", *COLUMNS])
     out = Path(out).resolve()
     (out / "scenes").mkdir(parents=True, exist_ok=True)
     done = {}
@@ -114,15 +118,19 @@ def sweep(spec, out, scheduler=None, workers=None, client=None, resume=True, con
                 own.close()
                 if cluster is not None:
                     cluster.close()
-    table = _table(jobs, done, pd)
+    table = _table(jobs, done, pd).rename(columns=labels)
     table.to_csv(out / "results.csv", index=False)
+    (out / "parameters.json").write_text(
+        json.dumps({name: path for path, name in labels.items()}, indent=1) + "\n", encoding="utf-8")
     from .sweep_page import write_sweep_page
 
-    write_sweep_page(table, _params(jobs), out, spec["name"])
+    params = list(labels.values())
+    write_sweep_page(table, params, out, spec["name"])
     if contact_sheet:
-        from .contact_sheet import write_contact_sheet
+        from .contact_sheet import write_contact_sheet, write_parameter_plot
 
-        write_contact_sheet(table, jobs, out / "contact_sheet.png", spec["name"])
+        write_contact_sheet(table, params, out / "contact_sheet.png", spec["name"])
+        write_parameter_plot(table, params, out / "parameters.png", spec["name"])
     if not quiet:
         failed = int((table["error"].fillna("") != "").sum())
         print(f"membra sweep: {len(jobs)} scenes in {time.perf_counter() - start:.1f} s, "

@@ -139,6 +139,12 @@ def test_a_sweep_on_a_real_scheduler_survives_a_killed_worker(root, tmp_path, cl
     assert len(table) == 4 and (table["error"] == "").all(), table["error"].tolist()
     assert (Path(tmp_path / "a" / "results.csv")).is_file()
     assert (Path(tmp_path / "a" / "contact_sheet.png")).stat().st_size > 10_000
+    assert (Path(tmp_path / "a" / "parameters.png")).stat().st_size > 10_000
+    # The varied parameters under short names, mapped back to their paths.
+    assert {"radii.0", "radii.1"} <= set(table.columns)
+    assert json.loads((tmp_path / "a" / "parameters.json").read_text())["radii.0"] == \
+        "protocol.1.pattern.union.0.ellipse.radii.0"
+    assert sorted(table["radii.1"].tolist()) == [50, 50, 80, 80]
     # The sweep's page: a sortable table, one row per scene with a thumbnail linking to the
     # scene's own report.html.
     page = (tmp_path / "a" / "report.html").read_text()
@@ -198,3 +204,14 @@ def test_a_design_sweep_reports_each_design_error(root, tmp_path):
     for _, row in table.iterrows():
         report = json.loads((Path(row["out"]) / "report.json").read_text())
         assert row["design_error"] == report["design"]["rms_error"] > 0
+
+
+def test_columns_get_short_names_or_the_sweep_files_labels():
+    from membra.sweep_spec import load_sweep, short_labels
+
+    paths = ["protocol.1.pattern.union.0.ellipse.radii.0", "protocol.1.pattern.union.0.ellipse.radii.1",
+             "simulation.solver"]
+    assert short_labels(paths) == {paths[0]: "radii.0", paths[1]: "radii.1", paths[2]: "solver"}
+    assert short_labels(paths, {paths[0]: "width"})[paths[0]] == "width"
+    with pytest.raises(membra.SceneError, match="/labels/"):
+        load_sweep({"name": "s", "scene": "x.json", "labels": {paths[0]: ""}})
