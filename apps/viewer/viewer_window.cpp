@@ -27,6 +27,15 @@
 namespace membra::viewer {
 namespace {
 
+// The sheet's box along x, y and z as it stands, "218 x 163 x 81 mm".
+std::string overall_size(const Points& x) {
+  if (x.cols() == 0) return "";
+  const Vec3 size = (x.rowwise().maxCoeff() - x.rowwise().minCoeff()) * 1e3;
+  char text[96];
+  std::snprintf(text, sizeof text, "%.0f \u00d7 %.0f \u00d7 %.0f mm", size.x(), size.y(), size.z());
+  return text;
+}
+
 const std::array<Rgb, 4> kFamilyColors = {Rgb(0.15f, 0.15f, 0.15f), Rgb(0.45f, 0.45f, 0.7f),
                                           Rgb(0.6f, 0.4f, 0.2f), Rgb(0.8f, 0.1f, 0.6f)};
 
@@ -203,11 +212,14 @@ void ViewerWindow::Impl::draw_scene(const ViewerSession& s, ViewSettings& v) {
   }
   draw_springs_and_particles(m, v, vp);
   draw_frame_and_cut(m, v, vp);
+  // Both views are orthographic: one scale in the plane of the screen (docs/viewer.md).
+  painter->scale_bar(v.flat ? flat_view(s, sw, h).scale() : h / (2.0 * v.camera.half_height), sw,
+                     h);
   Legend legend{field.title, field.unit, field.lo, field.hi};
   if (v.range) std::tie(legend.lo, legend.hi) = *v.range;
   glViewport(scene_x(), 0, legend_w, h);
   painter->legend(legend, legend_w, h);
-  painter->heading(legend.title, legend_w, h);
+  painter->heading(legend.title + " \u00b7 " + overall_size(x), legend_w, h);
   glViewport(0, 0, w, h);
 }
 

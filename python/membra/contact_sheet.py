@@ -65,12 +65,14 @@ def write_contact_sheet(table, params, file, title):
                                    vmin=-limit, vmax=limit, linewidth=0, antialiased=False)
             surf.set_array(k[tri].mean(axis=1))
             ax.set(xlim=(-half, half), ylim=(-half, half), zlim=(0, max(top, 1e-9)))
-            ax.set_box_aspect((1, 1, max(top, 1e-9) / (2 * half)))
+            # zoom: a 3-D axes leaves wide margins around its box; the forms fill the tile.
+            ax.set_box_aspect((1, 1, max(top, 1e-9) / (2 * half)), zoom=1.6)
             ax.view_init(elev=35, azim=-60)  # membra's pictures' camera
             ax.set_axis_off()
         ax.set_title(_label(row, params), fontsize=7)
     fig.suptitle(f"{title}: each released form on one scale (box {2 * half:.0f} mm wide) and one "
                  f"colour range", fontsize=10)
+    fig.subplots_adjust(left=0.01, right=0.9, bottom=0.01, top=0.88, wspace=0.0, hspace=0.25)
     if surf is not None:
         bar = fig.colorbar(surf, ax=fig.axes, shrink=0.5, fraction=0.02)
         bar.set_label("Gaussian curvature, 1/m² (95 % of |K| in range)", fontsize=8)

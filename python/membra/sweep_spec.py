@@ -146,6 +146,10 @@ def short_labels(params, labels=None, reserved=()):
     that clash."""
     labels = labels or {}
     reserved = set(reserved)
+    for path in labels:
+        if path not in params:
+            raise _error(f"sweep: /labels/{path}",
+                         f"names no varied parameter (varied: {', '.join(params) or 'none'})")
     given = [labels[p] for p in params if labels.get(p)]
     for path in params:
         label = labels.get(path)

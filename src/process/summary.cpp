@@ -73,21 +73,30 @@ void summarize_features(RunResult& r) {
   }
 }
 
-// The final state, its velocities and its frames turned into the reading pose, and the shape
-// measured again there (its box and z range are the posed piece's). A form still held, by pins
-// or against gravity, keeps the frame it hangs in.
+// The final state, its velocities and its frames turned into the reading pose of the quadric
+// summarize_form fitted. Of the shape, only what depends on where the form lies changes: its
+// box, z range and plane normal, and the quadric's frame. A form still held, by pins or against
+// gravity, keeps the frame it hangs in.
 void pose_form(RunResult& r) {
   State& s = r.prepared.membrane.state;
   const Model& m = r.prepared.membrane.sheet.model;
   if (m.gravity.squaredNorm() > 0.0) return;
   for (int p = 0; p < m.num_particles(); ++p)
     if (m.pinned(p)) return;
-  r.pose = reading_pose(s.x, fit_quadric(s.x, m.reference));
+  r.pose = reading_pose(s.x, r.shape.quadric);
   r.posed = true;
-  s.x = (r.pose.rotation * s.x).colwise() + r.pose.translation;
-  s.v = r.pose.rotation * s.v;
-  for (Frame& f : r.frames) f.x = (r.pose.rotation * f.x).colwise() + r.pose.translation;
-  r.shape = summarize_shape(s.x, m.reference);
+  const Eigen::Matrix3d& turn = r.pose.rotation;
+  s.x = (turn * s.x).colwise() + r.pose.translation;
+  s.v = turn * s.v;
+  for (Frame& f : r.frames) f.x = (turn * f.x).colwise() + r.pose.translation;
+  ShapeSummary& shape = r.shape;
+  shape.bbox_min = s.x.rowwise().minCoeff();
+  shape.bbox_max = s.x.rowwise().maxCoeff();
+  shape.z_range = shape.bbox_max.z() - shape.bbox_min.z();
+  shape.normal = turn * shape.normal;
+  QuadricFit& q = shape.quadric;
+  q.centre = turn * q.centre + r.pose.translation;
+  for (Vec3* d : {&q.normal, &q.d1, &q.d2, &q.paper_x}) *d = turn * *d;
 }
 
 }  // namespace

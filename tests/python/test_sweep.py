@@ -215,3 +215,9 @@ def test_columns_get_short_names_or_the_sweep_files_labels():
     assert short_labels(paths, {paths[0]: "width"})[paths[0]] == "width"
     with pytest.raises(membra.SceneError, match="/labels/"):
         load_sweep({"name": "s", "scene": "x.json", "labels": {paths[0]: ""}})
+    with pytest.raises(membra.SceneError, match="names no varied parameter"):
+        short_labels(paths, {"sheet.size": "size"})
+    with pytest.raises(membra.SceneError, match="is taken"):
+        short_labels(paths, {paths[0]: "height"}, reserved=["height"])
+    # A name that clashes with a result column is lengthened: target.cap.height -> cap.height.
+    assert short_labels(["target.cap.height"], reserved=["height"]) == {"target.cap.height": "cap.height"}
