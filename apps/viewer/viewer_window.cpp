@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "membra/core/input_error.hpp"
+#include "membra/core/readable_units.hpp"
 #include "membra/core/units.hpp"
 #include "membra/io/scene.hpp"
 #include "membra/output/output_set.hpp"
@@ -30,10 +31,8 @@ namespace {
 // The sheet's box along x, y and z as it stands, "218 x 163 x 81 mm".
 std::string overall_size(const Points& x) {
   if (x.cols() == 0) return "";
-  const Vec3 size = (x.rowwise().maxCoeff() - x.rowwise().minCoeff()) * 1e3;
-  char text[96];
-  std::snprintf(text, sizeof text, "%.0f \u00d7 %.0f \u00d7 %.0f mm", size.x(), size.y(), size.z());
-  return text;
+  const Vec3 size = x.rowwise().maxCoeff() - x.rowwise().minCoeff();
+  return box_dimensions(size.x(), size.y(), size.z());
 }
 
 const std::array<Rgb, 4> kFamilyColors = {Rgb(0.15f, 0.15f, 0.15f), Rgb(0.45f, 0.45f, 0.7f),

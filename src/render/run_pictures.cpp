@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "membra/core/readable_units.hpp"
 #include "membra/render/renderer.hpp"
 
 namespace membra {
@@ -92,18 +93,17 @@ void paint_branches(const RunResult& r, const RunStaging& s, const Camera& camer
 // The posed form's overall size, "218 x 163 x 81 mm" (its box along x, y and z), and the best-fit
 // quadric's principal radii where it describes the form ("radii 92 / 174 mm").
 std::string dimensions(const RunResult& r) {
-  const Vec3 size = (r.shape.bbox_max - r.shape.bbox_min) * 1e3;
-  char text[160];
-  int n = std::snprintf(text, sizeof text, "%.0f \u00d7 %.0f \u00d7 %.0f mm", size.x(), size.y(),
-                        size.z());
+  const Vec3 size = r.shape.bbox_max - r.shape.bbox_min;
+  std::string text = box_dimensions(size.x(), size.y(), size.z());
   const QuadricFit& q = r.shape.quadric;
   if (q.valid && q.classification != "flat" && q.classification != "folded") {
     const auto radius = [](double k) { return std::abs(k) < 1e-3 ? 0.0 : 1e3 / k; };
+    char radii[64];
     if (q.classification == "cylindrical")
-      std::snprintf(text + n, sizeof text - n, ", radius %.0f mm", radius(q.k1));
+      std::snprintf(radii, sizeof radii, ", radius %.0f mm", radius(q.k1));
     else
-      std::snprintf(text + n, sizeof text - n, ", radii %.0f / %.0f mm", radius(q.k1),
-                    radius(q.k2));
+      std::snprintf(radii, sizeof radii, ", radii %.0f / %.0f mm", radius(q.k1), radius(q.k2));
+    text.append(radii);
   }
   return text;
 }

@@ -68,4 +68,11 @@ inline Ticks readable_ticks(double lo, double hi, const std::string& unit, int c
   return t;
 }
 
+// A box's size given in metres, as the pictures and the viewer head it: "218 × 163 × 81 mm".
+inline std::string box_dimensions(double x, double y, double z) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%.0f \u00d7 %.0f \u00d7 %.0f mm", x * 1e3, y * 1e3, z * 1e3);
+  return text;
+}
+
 }  // namespace membra
