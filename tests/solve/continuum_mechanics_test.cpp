@@ -1,5 +1,5 @@
-// The continuum sheet as a plate: a compressed strip buckles at Euler's strain (docs/model.md,
-// "Where the continuum model stands").
+// The continuum sheet as a plate: a compressed strip buckles at Euler's strain, and a loaded plate
+// deflects as Kirchhoff's (docs/model.md, "Where the continuum model stands").
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -63,6 +63,68 @@ TEST(ContinuumMechanics, CompressedStripBucklesAtTheEulerStrain) {
   std::printf("continuum buckling strain / Euler: %.4f (%d particles)\n", ratio,
               s.model.num_particles());
   EXPECT_NEAR(ratio, 1.0, 0.1);
+}
+
+// The largest deflection of a square latex plate of side a = 100 mm under gravity g (a uniform
+// load q = rho t g), pinned on every particle that `held` selects (paper position, m).
+template <typename Held>
+double plate_deflection(const ContinuumSpec& spec, double g, Held held) {
+  Sheet s = build_continuum_sheet(spec);
+  Model& m = s.model;
+  for (int p = 0; p < m.num_particles(); ++p)
+    if (held(Vec2(m.reference.col(p).head<2>()))) m.pin(p);
+  m.gravity = Vec3(0.0, 0.0, -g);
+  State st = State::at_rest(m);
+  NewtonOptions no;
+  no.force_scale = s.stiffness.stretch * s.mesh.mean_edge;
+  no.tolerance = 1e-10;
+  const SolveReport r = solve_newton(m, st, no);
+  EXPECT_TRUE(r.converged) << r.message;
+  return -st.x.row(2).minCoeff();
+}
+
+// Kirchhoff's plate: a square latex plate of side a under a uniform load small enough (a
+// deflection of 5 % of the thickness) that the membrane does not stiffen it, against the closed
+// forms w = alpha q a^4 / D (Timoshenko & Woinowsky-Krieger, independent of nu):
+//  - simply supported, alpha = 0.00406235: its rim pinned, the rim's edges moment-free;
+//  - clamped, alpha = 0.00126532: the plate inside a pinned flat frame 10 mm wide, its edges
+//    part of the mesh (a feature outline), so the slope there is held at zero.
+// D = E t^3 / (12 (1 - nu^2)) with the latex's nu = 1/2. The shell triangles are too soft here:
+// on a 5 mm mesh (20 elements along a side) the plate deflects 1.12 (simply supported) and 1.21
+// (clamped) times Kirchhoff's, converging slowly and unevenly with the mesh (docs/model.md), so
+// the 5 % is not met. Held to what they do: never stiffer than the plate, and at most
+// 15 % / 25 % softer, so that a change for the worse shows.
+TEST(ContinuumMechanics, APlateUnderUniformLoadDeflectsAsKirchhoffs) {
+  const Material latex_m = latex();
+  const double a = 0.1, t = latex_m.thickness, nu = 0.5;
+  const double d = latex_m.youngs_modulus * t * t * t / (12.0 * (1.0 - nu * nu));
+  // g for a simply supported deflection of t / 20.
+  const double g = 0.05 * t * d / (0.00406235 * latex_m.density * t * std::pow(a, 4));
+  const double q = latex_m.density * t * g;
+  ContinuumSpec simple;
+  simple.width = simple.height = a;
+  simple.mesh.max_edge = 0.005;
+  const double e = 1e-9;
+  const double w_simple = plate_deflection(simple, g, [&](const Vec2& p) {
+    return p.x() < e || p.y() < e || p.x() > a - e || p.y() > a - e;
+  });
+  ContinuumSpec clamped;
+  const double frame = 0.01, side = a + 2.0 * frame;
+  clamped.width = clamped.height = side;
+  clamped.features = {
+      {{frame, frame}, {side - frame, frame}, {side - frame, side - frame}, {frame, side - frame}}};
+  clamped.mesh.max_edge = 0.005;
+  const double w_clamped = plate_deflection(clamped, g, [&](const Vec2& p) {
+    return p.x() < frame + e || p.y() < frame + e || p.x() > side - frame - e ||
+           p.y() > side - frame - e;
+  });
+  const double kirchhoff = q * std::pow(a, 4) / d;
+  std::printf("plate deflection / Kirchhoff: simply supported %.4f, clamped %.4f\n",
+              w_simple / (0.00406235 * kirchhoff), w_clamped / (0.00126532 * kirchhoff));
+  EXPECT_GT(w_simple / (0.00406235 * kirchhoff), 1.0);
+  EXPECT_LT(w_simple / (0.00406235 * kirchhoff), 1.15);
+  EXPECT_GT(w_clamped / (0.00126532 * kirchhoff), 1.0);
+  EXPECT_LT(w_clamped / (0.00126532 * kirchhoff), 1.25);
 }
 
 }  // namespace
