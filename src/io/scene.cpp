@@ -28,7 +28,8 @@ const std::vector<std::string_view> kSheetKeys = {"size",    "resolution", "mate
 const std::vector<std::string_view> kMeshKeys = {"max_edge", "elements_across", "min_angle",
                                                  "grading", "tolerance"};
 const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "flex_ratio"};
-const std::vector<std::string_view> kMaterialKeys = {"preset", "E", "thickness", "density", "law"};
+const std::vector<std::string_view> kMaterialKeys = {"preset",  "E",   "thickness",
+                                                     "density", "law", "wrinkling"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
 const std::vector<std::string_view> kSimulationKeys = {"solver",
                                                        "K",
@@ -81,6 +82,13 @@ std::map<std::string, Material> parse_materials(const json& j) {
     const std::string law = m.string("law", std::string(to_string(base.law)),
                                      {"neo_hookean", "mooney_rivlin", "stvk", "linear"});
     base.law = *membrane_law_from_name(law);
+    base.wrinkling = *wrinkling_from_name(
+        m.string("wrinkling", std::string(to_string(base.wrinkling)), {"full", "relaxed"}));
+    if (base.wrinkling == Wrinkling::relaxed && !relaxable(base.law))
+      throw InputError(m.pointer("wrinkling"),
+                       "\"relaxed\" needs an incompressible law (neo_hookean or mooney_rivlin), "
+                       "but the law is \"" +
+                           law + "\"");
     out[name] = base;
   }
   return out;

@@ -124,12 +124,14 @@ json write_material(const Material& m, bool with_law) {
             {"thickness", in(m.thickness, units::mm)},
             {"density", in(m.density, units::g_per_cm3)}};
   if (with_law) j["law"] = std::string(to_string(m.law));
+  if (with_law && m.wrinkling != Wrinkling::full)
+    j["wrinkling"] = std::string(to_string(m.wrinkling));
   return j;
 }
 
 bool same_material(const Material& a, const Material& b) {
   return a.youngs_modulus == b.youngs_modulus && a.thickness == b.thickness &&
-         a.density == b.density && a.law == b.law;
+         a.density == b.density && a.law == b.law && a.wrinkling == b.wrinkling;
 }
 
 // The materials the scene uses that are not presets as they stand, by name.

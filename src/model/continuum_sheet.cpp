@@ -142,7 +142,11 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
   m.reference = Points::Zero(3, n);
   for (int p = 0; p < n; ++p) m.reference.col(p).head<2>() = pm.vertices[static_cast<size_t>(p)];
   m.mass.assign(static_cast<size_t>(n), 0.0);
-  const LawConstants law = law_constants(mat.law, mat.youngs_modulus);
+  LawConstants law = law_constants(mat.law, mat.youngs_modulus);
+  law.relaxed = mat.wrinkling == Wrinkling::relaxed;
+  if (law.relaxed && !relaxable(mat.law))
+    throw std::invalid_argument("a relaxed membrane needs an incompressible law, not " +
+                                std::string(to_string(mat.law)));
   double edges = 0.0;
   for (const auto& t : pm.triangles) {
     const Vec3 &a = m.reference.col(t[0]), &b = m.reference.col(t[1]), &c = m.reference.col(t[2]);
@@ -154,9 +158,7 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
   }
   m.inv_mass.resize(m.mass.size());
   for (size_t p = 0; p < m.mass.size(); ++p) m.inv_mass[p] = 1.0 / m.mass[p];
-  const bool incompressible =
-      mat.law == MembraneLaw::neo_hookean || mat.law == MembraneLaw::mooney_rivlin;
-  const double nu = incompressible ? 0.5 : 1.0 / 3.0, t = mat.thickness;
+  const double nu = relaxable(mat.law) ? 0.5 : 1.0 / 3.0, t = mat.thickness;
   const double d = mat.youngs_modulus * t * t * t / (12.0 * (1.0 - nu * nu));
   m.shell_triangles.add_mesh(pm.triangles, m.reference, d, nu);
   SheetMesh& mesh = sheet.mesh;

@@ -25,6 +25,20 @@ std::optional<MembraneLaw> membrane_law_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view to_string(Wrinkling w) {
+  return w == Wrinkling::relaxed ? "relaxed" : "full";
+}
+
+std::optional<Wrinkling> wrinkling_from_name(std::string_view name) {
+  for (Wrinkling w : {Wrinkling::full, Wrinkling::relaxed})
+    if (to_string(w) == name) return w;
+  return std::nullopt;
+}
+
+bool relaxable(MembraneLaw law) {
+  return law == MembraneLaw::neo_hookean || law == MembraneLaw::mooney_rivlin;
+}
+
 LawConstants law_constants(MembraneLaw law, double youngs_modulus, double nu) {
   if (!(youngs_modulus > 0.0)) throw std::invalid_argument("a law needs a positive modulus E");
   const double mu_incompressible = youngs_modulus / 3.0;

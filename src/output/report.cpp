@@ -32,7 +32,8 @@ void report_model(const Scene& scene, const Sheet& sheet, json& j) {
                {"max_edge", m.spec.max_edge / units::mm},
                {"elements_across", m.spec.elements_across},
                {"narrowest_feature_mm", m.narrowest.width / units::mm},
-               {"laws", {{"sheet", std::string(to_string(sheet.material.law))}}}};
+               {"laws", {{"sheet", std::string(to_string(sheet.material.law))}}},
+               {"wrinkling", std::string(to_string(sheet.material.wrinkling))}};
 }
 
 void report_run(const Scene& scene, const RunResult& r, json& j) {

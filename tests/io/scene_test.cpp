@@ -106,6 +106,9 @@ TEST(Scene, ReadsTheModelItsMeshAndTheLaws) {
   EXPECT_EQ(s.mesh.elements_across, 6);
   EXPECT_EQ(s.sheet.material.law, MembraneLaw::mooney_rivlin);
   EXPECT_EQ(epoxy().law, MembraneLaw::stvk);  // the resin's default
+  EXPECT_EQ(s.sheet.material.wrinkling, Wrinkling::full);
+  j["materials"]["latex"]["wrinkling"] = "relaxed";
+  EXPECT_EQ(parse_scene(j).sheet.material.wrinkling, Wrinkling::relaxed);
   // --set makes the objects a path needs.
   json k = minimal();
   apply_override(k, "model=continuum");
@@ -158,6 +161,8 @@ TEST(Scene, ErrorsNameTheJsonPointer) {
       {R"({"sheet": {"mesh": {"elements_across": 0}}})", "/sheet/mesh/elements_across"},
       {R"({"sheet": {"mesh": {"size": 4}}})", "/sheet/mesh/size"},
       {R"({"materials": {"latex": {"law": "hooke"}}})", "/materials/latex/law"},
+      {R"({"materials": {"latex": {"wrinkling": "some"}}})", "/materials/latex/wrinkling"},
+      {R"({"materials": {"epoxy": {"wrinkling": "relaxed"}}})", "/materials/epoxy/wrinkling"},
   };
   for (const auto& c : cases) {
     json j = minimal();

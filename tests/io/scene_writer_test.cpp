@@ -94,5 +94,32 @@ TEST(SceneWriter, CustomMaterialsAreWrittenAndPresetsNamed) {
   EXPECT_EQ(w["protocol"][1]["pattern"]["circle"]["radius"], 20.0);
 }
 
+// A continuum scene's law and wrinkling are written and read back; the lattice has no use for
+// either, so they stay out of its files.
+TEST(SceneWriter, TheContinuumsLawAndWrinklingAreWrittenAndReadBack) {
+  json j = {{"name", "w"},
+            {"model", "continuum"},
+            {"materials", {{"latex", {{"law", "mooney_rivlin"}, {"wrinkling", "relaxed"}}}}},
+            {"sheet", {{"size", {100, 100}}, {"material", "latex"}}},
+            {"protocol", {{{"step", "stretch"}, {"lambda", {1.2, 1.2}}}}}};
+  const Scene first = parse_scene(j);
+  const json w = write_scene(first);
+  EXPECT_EQ(w["materials"]["latex"]["wrinkling"], "relaxed");
+  EXPECT_EQ(w["materials"]["latex"]["law"], "mooney_rivlin");
+  const Scene again = parse_scene(w);
+  EXPECT_EQ(again.sheet.material.wrinkling, Wrinkling::relaxed);
+  EXPECT_EQ(again.sheet.material.law, MembraneLaw::mooney_rivlin);
+  // Wrinkling alone makes the latex differ from its preset, so it is written.
+  j["materials"]["latex"].erase("law");
+  const json only = write_scene(parse_scene(j));
+  EXPECT_EQ(only["materials"]["latex"]["wrinkling"], "relaxed");
+  EXPECT_EQ(parse_scene(only).sheet.material.wrinkling, Wrinkling::relaxed);
+  // The lattice ignores both, and its files leave them out.
+  j["model"] = "lattice";
+  j["sheet"]["resolution"] = {5, 5};
+  const json lattice = write_scene(parse_scene(j));
+  EXPECT_FALSE(lattice["materials"]["latex"].contains("wrinkling"));
+}
+
 }  // namespace
 }  // namespace membra

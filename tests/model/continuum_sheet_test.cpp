@@ -132,5 +132,24 @@ TEST(ContinuumSheet, ADiskIsMeshedInsideItsEllipse) {
   EXPECT_NEAR(area, std::numbers::pi * 0.05 * 0.04, std::numbers::pi * 0.05 * 0.04 * 1e-3);
 }
 
+// "wrinkling": "relaxed" relaxes every bare latex triangle; impregnation bonds the latex under
+// the resin to it, so those triangles take compression again (membrane_law.hpp).
+TEST(ContinuumSheet, RelaxedLatexStaysRelaxedOnlyWhereBare) {
+  ContinuumSpec s = spec();
+  s.material.wrinkling = Wrinkling::relaxed;
+  Membrane m = make_membrane(build_continuum_sheet(s));
+  const MembraneTriangles& t = m.sheet.model.membrane_triangles;
+  for (const LayerRest& l : t.latex) EXPECT_TRUE(l.law.relaxed);
+  impregnate(m, make_polygon(s.features[0]), epoxy(), +1, false);
+  int bonded = 0;
+  for (int i = 0; i < t.size(); ++i) {
+    const auto k = static_cast<size_t>(i);
+    EXPECT_EQ(t.latex[k].law.relaxed, !(t.resin[k].volume > 0.0)) << i;
+    bonded += t.resin[k].volume > 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(bonded, 0);
+  EXPECT_LT(bonded, t.size());
+}
+
 }  // namespace
 }  // namespace membra

@@ -17,6 +17,9 @@ struct Material {
   // The continuum sheet's law for this material (membrane_law.hpp); the lattice's springs are
   // linear whatever it says.
   MembraneLaw law = MembraneLaw::neo_hookean;
+  // How the continuum membrane takes compression (membrane_law.hpp): relaxed = tension-field
+  // theory, for relaxable laws; the resin's layer and the latex under it are never relaxed.
+  Wrinkling wrinkling = Wrinkling::full;
 };
 
 // Natural-rubber latex: E 1.5 MPa, t 0.5 mm, rho 0.93 g/cm^3, incompressible neo-Hookean.

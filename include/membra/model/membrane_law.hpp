@@ -11,26 +11,49 @@
 //    plane-stress lambda = E nu / (1 - nu^2), mu = E / (2 (1 + nu)) (the resin composite);
 //  - linear: the same moduli on the Biot strain U - I, U = sqrt(C): stress proportional to
 //    stretch, the linear springs' law, for comparison.
+// An incompressible law may be relaxed (tension-field theory, Pipkin 1986/1994): thin latex
+// cannot carry compression, it wrinkles at a scale below any practical mesh, so the relaxed
+// energy is the least the law stores over every finer wrinkling of the same mean stretch:
+//  - slack (l1 <= 1): nothing;
+//  - wrinkled (l1 > 1, l2 below uniaxial tension's free stretch l1^-1/2): uniaxial tension
+//    at l1, W(l1^2 + 1/l1, l1) in (I, J);
+//  - taut: the law itself.
+// The three meet with their first derivatives (the free axis's stress is zero where they meet),
+// and a small share `kRelaxedResidual` of the law itself keeps slack latex from floating freely.
 // Templated on the scalar so that dual numbers give exact second derivatives.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 
 namespace membra {
 
 enum class MembraneLaw : std::uint8_t { neo_hookean, mooney_rivlin, stvk, linear };
+// How a material's membrane takes compression: as the law says ("full"), or relaxed by
+// tension-field theory ("relaxed"; incompressible laws only).
+enum class Wrinkling : std::uint8_t { full, relaxed };
 
 std::string_view to_string(MembraneLaw law);
 // The law a scene names ("neo_hookean", "mooney_rivlin", "stvk", "linear"), or nothing.
 std::optional<MembraneLaw> membrane_law_from_name(std::string_view name);
+std::string_view to_string(Wrinkling w);
+std::optional<Wrinkling> wrinkling_from_name(std::string_view name);
+// Whether `law` can be relaxed (its uniaxial free stretch is l^-1/2: the incompressible laws).
+bool relaxable(MembraneLaw law);
 
 // A law and its constants (Pa): neo_hookean c1 = mu; mooney_rivlin c1 = C1, c2 = C2; stvk and
 // linear c1 = mu, c2 = the plane-stress lambda.
 struct LawConstants {
   MembraneLaw law = MembraneLaw::neo_hookean;
   double c1 = 0.0, c2 = 0.0;
+  bool relaxed = false;  // tension-field relaxation (relaxable laws only)
 };
+
+// The share of the unrelaxed law a relaxed membrane keeps, so that slack latex still has a
+// little stiffness and Newton's matrix stays regular (docs/model.md, "Wrinkling").
+inline constexpr double kRelaxedResidual = 1e-3;
 
 // The shape of Mooney-Rivlin's fit to Treloar's uniaxial and equibiaxial rubber over stretches
 // 1.0-2.0, C2 / C1 (rubber_fit.hpp; the test refits it from the data; docs/model.md).
@@ -47,8 +70,18 @@ struct LawValue {
   T w, w_i, w_j;
 };
 
+// A scalar's plain value, through any nesting of dual numbers.
 template <typename T>
-LawValue<T> strain_energy(const LawConstants& k, const T& I, const T& J) {
+double plain_value(const T& x) {
+  if constexpr (std::is_arithmetic_v<T>)
+    return static_cast<double>(x);
+  else
+    return plain_value(x.value());
+}
+
+// The law as it is, compression and all.
+template <typename T>
+LawValue<T> full_strain_energy(const LawConstants& k, const T& I, const T& J) {
   using std::sqrt;
   switch (k.law) {
     case MembraneLaw::neo_hookean: {
@@ -76,6 +109,31 @@ LawValue<T> strain_energy(const LawConstants& k, const T& I, const T& J) {
     }
   }
   return {T(0.0), T(0.0), T(0.0)};
+}
+
+// Tension-field theory's relaxed energy of an incompressible law, without the residual.
+template <typename T>
+LawValue<T> relaxed_strain_energy(const LawConstants& k, const T& I, const T& J) {
+  using std::sqrt;
+  const double i = plain_value(I), j = plain_value(J);
+  const double big = 0.5 * i + std::sqrt(std::max(0.0, 0.25 * i * i - j));  // l1^2
+  if (big <= 1.0) return {T(0.0), T(0.0), T(0.0)};                          // slack
+  if (j * j >= big) return full_strain_energy(k, I, J);                     // taut: l2^2 >= 1/l1
+  // Wrinkled: l2 < l1^-1/2 < 1 < l1, so the eigenvalues are apart and s > 0.
+  const T s = sqrt(0.25 * I * I - J), l1_sq = 0.5 * I + s, l1 = sqrt(l1_sq);
+  const LawValue<T> u = full_strain_energy(k, T(l1_sq + 1.0 / l1), l1);
+  // d W / d l1^2 along uniaxial tension, then l1^2's derivatives in I and J.
+  const T dw = u.w_i * (1.0 - 0.5 / (l1_sq * l1)) + u.w_j * (0.5 / l1);
+  return {u.w, dw * (0.5 + 0.25 * I / s), dw * (-0.5 / s)};
+}
+
+// The law's strain energy: as it is, or relaxed with its residual share.
+template <typename T>
+LawValue<T> strain_energy(const LawConstants& k, const T& I, const T& J) {
+  if (!k.relaxed) return full_strain_energy(k, I, J);
+  const LawValue<T> r = relaxed_strain_energy(k, I, J), f = full_strain_energy(k, I, J);
+  return {r.w + kRelaxedResidual * f.w, r.w_i + kRelaxedResidual * f.w_i,
+          r.w_j + kRelaxedResidual * f.w_j};
 }
 
 // Nominal stress (force per undeformed area, Pa) of the law in uniaxial tension at stretch l

@@ -221,6 +221,8 @@ int MembraneTriangles::impregnate(const Impregnation& at) {
     const Eigen::Matrix2d g = triangle_metric(at.x.col(p[0]), at.x.col(p[1]), at.x.col(p[2]));
     const double area = 0.5 * std::sqrt(std::max(0.0, g.determinant()));
     resin[static_cast<size_t>(i)] = layer_at(g, area * at.resin.thickness, law);
+    // Bonded to the resin, the latex wrinkles only as the composite does.
+    latex[static_cast<size_t>(i)].law.relaxed = false;
     ++count;
   }
   return count;
