@@ -111,14 +111,16 @@ LawValue<T> full_strain_energy(const LawConstants& k, const T& I, const T& J) {
   return {T(0.0), T(0.0), T(0.0)};
 }
 
-// Tension-field theory's relaxed energy of an incompressible law, without the residual.
+// Tension-field theory's relaxed energy of an incompressible law, without the residual, given
+// the law's own value at (I, J) (what the taut state stores), so that it is computed once.
 template <typename T>
-LawValue<T> relaxed_strain_energy(const LawConstants& k, const T& I, const T& J) {
+LawValue<T> relaxed_strain_energy(const LawConstants& k, const T& I, const T& J,
+                                  const LawValue<T>& full) {
   using std::sqrt;
   const double i = plain_value(I), j = plain_value(J);
   const double big = 0.5 * i + std::sqrt(std::max(0.0, 0.25 * i * i - j));  // l1^2
   if (big <= 1.0) return {T(0.0), T(0.0), T(0.0)};                          // slack
-  if (j * j >= big) return full_strain_energy(k, I, J);                     // taut: l2^2 >= 1/l1
+  if (j * j >= big) return full;                                            // taut: l2^2 >= 1/l1
   // Wrinkled: l2 < l1^-1/2 < 1 < l1, so the eigenvalues are apart and s > 0.
   const T s = sqrt(0.25 * I * I - J), l1_sq = 0.5 * I + s, l1 = sqrt(l1_sq);
   const LawValue<T> u = full_strain_energy(k, T(l1_sq + 1.0 / l1), l1);
@@ -127,11 +129,16 @@ LawValue<T> relaxed_strain_energy(const LawConstants& k, const T& I, const T& J)
   return {u.w, dw * (0.5 + 0.25 * I / s), dw * (-0.5 / s)};
 }
 
+template <typename T>
+LawValue<T> relaxed_strain_energy(const LawConstants& k, const T& I, const T& J) {
+  return relaxed_strain_energy(k, I, J, full_strain_energy(k, I, J));
+}
+
 // The law's strain energy: as it is, or relaxed with its residual share.
 template <typename T>
 LawValue<T> strain_energy(const LawConstants& k, const T& I, const T& J) {
   if (!k.relaxed) return full_strain_energy(k, I, J);
-  const LawValue<T> r = relaxed_strain_energy(k, I, J), f = full_strain_energy(k, I, J);
+  const LawValue<T> f = full_strain_energy(k, I, J), r = relaxed_strain_energy(k, I, J, f);
   return {r.w + kRelaxedResidual * f.w, r.w_i + kRelaxedResidual * f.w_i,
           r.w_j + kRelaxedResidual * f.w_j};
 }
