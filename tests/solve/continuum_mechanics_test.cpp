@@ -47,10 +47,8 @@ double buckling_strain(const Sheet& s, double length, double guess) {
 
 // A 100 x 10 mm latex strip held at both ends, four elements across: Euler's strain for a strip
 // of free sides is the beam's, (pi^2/12)(t/L)^2 (the plate's D (1 - nu^2) = E t^3 / 12 once the
-// strip takes its anticlastic curvature, which the plate's own nu lets it take). Measured 0.92
-// here and 0.95 at eight across (docs/model.md): the triangles along the free sides, whose
-// curvature meets a moment-free condition rather than a neighbour, are a little soft, less so as
-// they narrow. Held within 10 %, the 5 % reached only on finer meshes.
+// strip takes its anticlastic curvature, which the plate's own nu lets it take). Within 5 %
+// (measured in docs/model.md).
 TEST(ContinuumMechanics, CompressedStripBucklesAtTheEulerStrain) {
   const double length = 0.1, t = 0.5e-3;
   ContinuumSpec spec;
@@ -62,17 +60,68 @@ TEST(ContinuumMechanics, CompressedStripBucklesAtTheEulerStrain) {
   const double ratio = buckling_strain(s, length, euler) / euler;
   std::printf("continuum buckling strain / Euler: %.4f (%d particles)\n", ratio,
               s.model.num_particles());
-  EXPECT_NEAR(ratio, 1.0, 0.1);
+  EXPECT_NEAR(ratio, 1.0, 0.05);
+}
+
+// The weak patch test for bending: a quadratic z = X^T H X / 2 imposed on a 100 mm plate's
+// mesh (the mesher's irregular triangles) and held beyond 35 mm from the centre, the particles
+// inside free to move out of plane. A curvature that telescopes leaves them nothing to gain: the
+// relaxed energy (the flat plate's Hessian in z, exact for small heights) stays within 0.5 % of
+// the imposed one for a sphere, a cylinder and a saddle. The shell triangles that read each
+// triangle's own fitted Hessian kept 0.943, 0.956 and 0.998 here (docs/model.md).
+TEST(ContinuumMechanics, HeldQuadraticsPassTheWeakPatchTest) {
+  ContinuumSpec spec;
+  spec.width = spec.height = 0.1;
+  spec.mesh.max_edge = 0.005;
+  const Sheet s = build_continuum_sheet(spec);
+  const Model& m = s.model;
+  const int n = m.num_particles();
+  const Eigen::MatrixXd full = Eigen::MatrixXd(potential_hessian(m, m.reference));
+  Eigen::MatrixXd k(n, n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) k(a, b) = full(3 * a + 2, 3 * b + 2);
+  const Vec2 centre(0.05, 0.05);
+  std::vector<int> inner, held;
+  for (int p = 0; p < n; ++p)
+    ((m.reference.col(p).head<2>() - centre).norm() > 0.035 ? held : inner).push_back(p);
+  for (const Eigen::Matrix2d& h : {Eigen::Matrix2d(Eigen::Vector2d(1.0, 1.0).asDiagonal()),
+                                   Eigen::Matrix2d(Eigen::Vector2d(1.0, 0.0).asDiagonal()),
+                                   Eigen::Matrix2d(Eigen::Vector2d(1.0, -1.0).asDiagonal())}) {
+    Eigen::VectorXd z(n);
+    for (int p = 0; p < n; ++p) {
+      const Vec2 d = m.reference.col(p).head<2>() - centre;
+      z[p] = 0.5 * d.dot(h * d);
+    }
+    const double imposed = 0.5 * z.dot(k * z);
+    const Eigen::VectorXd relaxed_inner = -k(inner, inner).ldlt().solve(k(inner, held) * z(held));
+    Eigen::VectorXd relaxed = z;
+    relaxed(inner) = relaxed_inner;
+    const double ratio = 0.5 * relaxed.dot(k * relaxed) / imposed;
+    std::printf("weak patch test, curvatures (%g, %g): relaxed / imposed %.4f\n", h(0, 0), h(1, 1),
+                ratio);
+    EXPECT_GT(ratio, 0.995);
+    EXPECT_LE(ratio, 1.0 + 1e-9);
+  }
 }
 
 // The largest deflection of a square latex plate of side a = 100 mm under gravity g (a uniform
-// load q = rho t g), pinned on every particle that `held` selects (paper position, m).
+// load q = rho t g), pinned on every particle that `held` selects (paper position, m); with
+// `clamp` a triangle whose corners are all held is made a stiff plate (1000 times the latex's).
 template <typename Held>
-double plate_deflection(const ContinuumSpec& spec, double g, Held held) {
+double plate_deflection(const ContinuumSpec& spec, double g, bool clamp, Held held) {
   Sheet s = build_continuum_sheet(spec);
   Model& m = s.model;
   for (int p = 0; p < m.num_particles(); ++p)
     if (held(Vec2(m.reference.col(p).head<2>()))) m.pin(p);
+  ShellTriangles& shells = m.shell_triangles;
+  for (int i = 0; clamp && i < shells.size(); ++i) {
+    const auto& c = shells.v[static_cast<size_t>(i)];
+    if (m.pinned(c[0]) && m.pinned(c[1]) && m.pinned(c[2])) {
+      PlateLayer& r = shells.resin[static_cast<size_t>(i)];
+      r = shells.latex[static_cast<size_t>(i)];
+      r.d *= 1000.0;
+    }
+  }
   m.gravity = Vec3(0.0, 0.0, -g);
   State st = State::at_rest(m);
   NewtonOptions no;
@@ -87,13 +136,10 @@ double plate_deflection(const ContinuumSpec& spec, double g, Held held) {
 // deflection of 5 % of the thickness) that the membrane does not stiffen it, against the closed
 // forms w = alpha q a^4 / D (Timoshenko & Woinowsky-Krieger, independent of nu):
 //  - simply supported, alpha = 0.00406235: its rim pinned, the rim's edges moment-free;
-//  - clamped, alpha = 0.00126532: the plate inside a pinned flat frame 10 mm wide, its edges
-//    part of the mesh (a feature outline), so the slope there is held at zero.
-// D = E t^3 / (12 (1 - nu^2)) with the latex's nu = 1/2. The shell triangles are too soft here:
-// on a 5 mm mesh (20 elements along a side) the plate deflects 1.12 (simply supported) and 1.21
-// (clamped) times Kirchhoff's, converging slowly and unevenly with the mesh (docs/model.md), so
-// the 5 % is not met. Held to what they do: never stiffer than the plate, and at most
-// 15 % / 25 % softer, so that a change for the worse shows.
+//  - clamped, alpha = 0.00126532: the plate inside a pinned, stiff frame 10 mm wide, its edges
+//    part of the mesh (a feature outline), so the frame holds the slope there at zero.
+// D = E t^3 / (12 (1 - nu^2)) with the latex's nu = 1/2. Within 5 % on a 5 mm mesh (20 elements
+// along a side; the convergence with the mesh is in docs/model.md).
 TEST(ContinuumMechanics, APlateUnderUniformLoadDeflectsAsKirchhoffs) {
   const Material latex_m = latex();
   const double a = 0.1, t = latex_m.thickness, nu = 0.5;
@@ -105,7 +151,7 @@ TEST(ContinuumMechanics, APlateUnderUniformLoadDeflectsAsKirchhoffs) {
   simple.width = simple.height = a;
   simple.mesh.max_edge = 0.005;
   const double e = 1e-9;
-  const double w_simple = plate_deflection(simple, g, [&](const Vec2& p) {
+  const double w_simple = plate_deflection(simple, g, false, [&](const Vec2& p) {
     return p.x() < e || p.y() < e || p.x() > a - e || p.y() > a - e;
   });
   ContinuumSpec clamped;
@@ -114,17 +160,15 @@ TEST(ContinuumMechanics, APlateUnderUniformLoadDeflectsAsKirchhoffs) {
   clamped.features = {
       {{frame, frame}, {side - frame, frame}, {side - frame, side - frame}, {frame, side - frame}}};
   clamped.mesh.max_edge = 0.005;
-  const double w_clamped = plate_deflection(clamped, g, [&](const Vec2& p) {
+  const double w_clamped = plate_deflection(clamped, g, true, [&](const Vec2& p) {
     return p.x() < frame + e || p.y() < frame + e || p.x() > side - frame - e ||
            p.y() > side - frame - e;
   });
   const double kirchhoff = q * std::pow(a, 4) / d;
   std::printf("plate deflection / Kirchhoff: simply supported %.4f, clamped %.4f\n",
               w_simple / (0.00406235 * kirchhoff), w_clamped / (0.00126532 * kirchhoff));
-  EXPECT_GT(w_simple / (0.00406235 * kirchhoff), 1.0);
-  EXPECT_LT(w_simple / (0.00406235 * kirchhoff), 1.15);
-  EXPECT_GT(w_clamped / (0.00126532 * kirchhoff), 1.0);
-  EXPECT_LT(w_clamped / (0.00126532 * kirchhoff), 1.25);
+  EXPECT_NEAR(w_simple / (0.00406235 * kirchhoff), 1.0, 0.05);
+  EXPECT_NEAR(w_clamped / (0.00126532 * kirchhoff), 1.0, 0.05);
 }
 
 }  // namespace

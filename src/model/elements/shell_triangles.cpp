@@ -21,10 +21,7 @@ static_assert(ElementSet<ShellTriangles>);
 
 namespace {
 
-template <typename T>
-using M2 = Eigen::Matrix<T, 2, 2>;
-using Grad = Eigen::AutoDiffScalar<Eigen::Matrix<double, 12, 1>>;
-using Jet = SecondOrder<9>;
+using Jet = SecondOrder<15>;  // d1 = x1 - x0, d2 = x2 - x0, then w0, w1, w2
 
 // The plates' bilinear form: sum over layers of A (D/2) [nu tr(Ma) tr(Mb) + (1 - nu) tr(Ma Mb)],
 // M = G^-1 X; the energy is Q(II, II).
@@ -40,133 +37,187 @@ double plate_form(const std::array<const PlateLayer*, 2>& layers, const Eigen::M
   return q;
 }
 
-// The weight of the mid-edge estimate against the fit's rows (which are O(1)): small enough to
-// move a well-posed fit by well under 1 %, large enough to bound a degenerate one.
-constexpr double kPrior = 1e-3;
+// Below this smallest singular value (of the fit's rows, which are O(1)) a triangle's own fit is
+// not used: all six points near one conic, as at an interior corner of three triangles, whose
+// two neighbours share their far corner. On the mesher's meshes the smallest are about 0.1.
+constexpr double kPosed = 0.05;
 
-// A 3-vector of any scalar (double, first- or second-order duals) with the few operations the
-// curvature scalars need.
-template <typename T>
-struct P3 {
-  T x, y, z;
-  T& operator[](int i) { return i == 0 ? x : i == 1 ? y : z; }
-};
-template <typename T>
-P3<T> operator-(const P3<T>& a, const P3<T>& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
+// The quadratic basis that vanishes at the corners, b = ((u^2 - u)/2, uv, (v^2 - v)/2), in the
+// triangle's edge coordinates (u, v), and its gradient.
+Eigen::Vector3d basis(const Vec2& p) {
+  return {0.5 * (p.x() * p.x() - p.x()), p.x() * p.y(), 0.5 * (p.y() * p.y() - p.y())};
 }
-template <typename T>
-P3<T> operator+(const P3<T>& a, const P3<T>& b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-template <typename T>
-P3<T> scaled(const P3<T>& a, const T& s) {
-  return {a.x * s, a.y * s, a.z * s};
-}
-template <typename T>
-T dot(const P3<T>& a, const P3<T>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-template <typename T>
-P3<T> cross(const P3<T>& a, const P3<T>& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double value_of(double a) {
-  return a;
-}
-double value_of(const Grad& a) {
-  return a.value();
-}
-double value_of(const Jet& a) {
-  return a.v;
+Eigen::Matrix<double, 3, 2> basis_gradient(const Vec2& p) {
+  Eigen::Matrix<double, 3, 2> g;
+  g << p.x() - 0.5, 0.0, p.y(), p.x(), 0.0, p.y() - 0.5;
+  return g;
 }
 
-// The six geometric scalars a triangle's curvature is read from, each of its three corners and
-// one far corner p3 (edge k lies opposite corner k): m < 3, the far corner's height over the
-// face's plane; m >= 3, the mid-edge reading of edge k = m - 3, s_k = (x_{k+1} + x_{k+2} - 2 x_k)
-// . m_k / |m_k|, m_k the mean of the face's and the neighbour's (x_{k+2}, x_{k+1}, p3) normals.
-template <typename T>
-T geometric(int m, const std::array<P3<T>, 4>& p) {
-  using std::sqrt;
-  const P3<T> c = cross(p[1] - p[0], p[2] - p[0]);
-  // A face collapsed to a line has no normal: no reading (as a zero normal read before).
-  if (!(value_of(dot(c, c)) > 0.0)) return T(0.0);
-  const T c_norm = sqrt(dot(c, c));
-  if (m < 3) return dot(p[3] - p[0], c) / c_norm;
-  const auto k = static_cast<size_t>(m - 3);
-  const P3<T>&a = p[(k + 1) % 3], &b = p[(k + 2) % 3];
-  const P3<T> c2 = cross(a - b, p[3] - b);
-  if (!(value_of(dot(c2, c2)) > 0.0)) return T(0.0);
-  const T inv_c = T(1.0) / c_norm, inv_c2 = T(1.0) / T(sqrt(dot(c2, c2)));
-  const P3<T> mk = scaled(c, inv_c) + scaled(c2, inv_c2);
-  const T mk2 = dot(mk, mk);
-  // A neighbour folded flat onto the face has no mean normal: no reading (its weight is small).
-  if (value_of(mk2) < 1e-12) return T(0.0);
-  const P3<T> twice{p[k].x * T(2.0), p[k].y * T(2.0), p[k].z * T(2.0)};
-  return dot(a + b - twice, mk) / sqrt(mk2);
-}
-
-// The stencil position (0..17) of local coordinate c (0..11) of scalar m's four points.
-int stencil_dof(int m, int c) {
-  return c < 9 ? c : 9 + 3 * (m % 3) + (c - 9);
+// The triangle's reading from the natural sheet: corners c (counter-clockwise) and far corners f
+// (valid where `has`). The fit is the linear interpolant plus the quadratic b^T A^-1 r, r_k the
+// far corner's offset from the triangle's plane extended (A's rows b at the far corners).
+ShellReference reference_of(const std::array<Vec2, 3>& c, const std::array<Vec2, 3>& f,
+                            const std::array<bool, 3>& has) {
+  ShellReference r;
+  Eigen::Matrix2d e;
+  e << c[1] - c[0], c[2] - c[0];
+  const double area = 0.5 * e.determinant();
+  if (!(area > 0.0)) throw std::invalid_argument("shell triangle: degenerate rest shape");
+  const Eigen::Matrix2d e_inv = e.inverse();
+  r.gradient.col(1) = e_inv.row(0).transpose();
+  r.gradient.col(2) = e_inv.row(1).transpose();
+  r.gradient.col(0) = -r.gradient.col(1) - r.gradient.col(2);
+  Eigen::Matrix3d rows;
+  std::array<Vec2, 3> uv;
+  for (size_t k = 0; k < 3; ++k) {
+    uv[k] = e_inv * (f[k] - c[0]);
+    rows.row(static_cast<Eigen::Index>(k)) = basis(uv[k]).transpose();
+  }
+  const bool all = has[0] && has[1] && has[2];
+  const double sigma = all ? Eigen::JacobiSVD<Eigen::Matrix3d>(rows).singularValues()[2] : 0.0;
+  r.quality = sigma >= kPosed ? sigma : 0.0;
+  static const std::array<Vec2, 3> mid{Vec2(0.5, 0.5), Vec2(0.0, 0.5), Vec2(0.5, 0.0)};
+  for (size_t k = 0; k < 3; ++k) {
+    const Vec2 edge = c[(k + 2) % 3] - c[(k + 1) % 3];
+    const double l = edge.norm();
+    r.conormal[k] = Vec2(edge.y(), -edge.x()) / l;
+    const Vec2 ab = e.transpose() * r.conormal[k];
+    r.curvature.col(static_cast<Eigen::Index>(k)) =
+        l / area * Eigen::Vector3d(ab.x() * ab.x(), ab.x() * ab.y(), ab.y() * ab.y());
+    r.slope[k].head<3>() = r.conormal[k].transpose() * r.gradient;
+    r.slope[k].tail<3>().setZero();
+    if (r.quality == 0.0) continue;
+    const Eigen::Vector3d beta =
+        rows.transpose().partialPivLu().solve(basis_gradient(mid[k]) * (e_inv * r.conormal[k]));
+    for (size_t j = 0; j < 3; ++j) {
+      const auto jj = static_cast<Eigen::Index>(j);
+      r.slope[k][3 + jj] += beta[jj];
+      r.slope[k][0] -= beta[jj] * (1.0 - uv[j].x() - uv[j].y());
+      r.slope[k][1] -= beta[jj] * uv[j].x();
+      r.slope[k][2] -= beta[jj] * uv[j].y();
+    }
+  }
+  return r;
 }
 
 }  // namespace
 
-// The linear map from the six scalars to the curvature H = (H11, H12, H22) in the edge
-// coordinates, and the plates' quadratic form on H (E = H^T Q H). The second fundamental form is
-// the Hessian of the quadratic that vanishes at the corners, (H11 u^2 + 2 H12 uv + H22 v^2 -
-// H11 u - H22 v) / 2, and meets each far corner's height: row k of the fit (its (u, v) on the
-// natural sheet). A free edge (on the rim, or against a much softer neighbour) has no height to
-// meet; its row asks instead that the moment across it vanish, the plate's condition at a free
-// edge: dE/dII : (c c^T) = 0, c the edge's conormal in (u, v) (metric-free: it annihilates the
-// edge's direction). Across a resin edge this leaves the kink to the latex, as plates in series
-// share it. (Minimizing the energy over the free height instead also relaxes curvature along the
-// edge: a strip then buckled 9 % below Euler's load.) The rows are solved by least squares with
-// a weak pull (kPrior) towards the mid-edge estimate H11 = -(s0 + s1), H12 = -s0,
-// H22 = -(s0 + s2) (exact on symmetric neighbours only), which fills in what the fit cannot see.
-// The fit is singular where all six points lie on one conic, e.g. at an interior corner of three
-// triangles, whose two neighbours share their far corner (two equal rows); the pull bounds the gain
-// from heights to curvature (at most 1/(2 sqrt kPrior), about 16) and moves a well-posed fit by
-// about kPrior / sigma_min^2 of its gap to the mid-edge estimate (0.4 % on the best-conditioned
-// stencils). A free edge's mid-edge reading is left out (the estimate then takes s_k = 0).
+std::array<ShellTriangles::Edge, 3> ShellTriangles::edges(int i) const {
+  const auto k0 = static_cast<size_t>(i);
+  std::array<Edge, 3> out{};
+  for (size_t k = 0; k < 3; ++k) {
+    const int o = neighbour[k0][k];
+    if (o < 0 || plate(o) < kSofter * plate(i))
+      out[k] = Edge::free;
+    else if (plate(i) < kSofter * plate(o))
+      out[k] = Edge::clamped;
+    else
+      out[k] = Edge::shared;
+  }
+  return out;
+}
+
+std::array<bool, 3> ShellTriangles::free_edges(int i) const {
+  const std::array<Edge, 3> e = edges(i);
+  return {e[0] == Edge::free, e[1] == Edge::free, e[2] == Edge::free};
+}
+
+bool ShellTriangles::fit_counts(int i) const {
+  if (reference[static_cast<size_t>(i)].quality == 0.0) return false;
+  const std::array<Edge, 3> e = edges(i);
+  return e[0] == Edge::shared && e[1] == Edge::shared && e[2] == Edge::shared;
+}
+
+int ShellTriangles::slot_of(int i, int id) const {
+  const auto& p = v[static_cast<size_t>(i)];
+  for (int a = 0; a < kArity; ++a)
+    if (p[static_cast<size_t>(a)] == id) return a;
+  return -1;
+}
+
+bool ShellTriangles::add_neighbour_slope(int i, int k, int o, double weight, Plan& pl) const {
+  const auto oo = static_cast<size_t>(o);
+  int facing = -1;
+  for (int j = 0; j < 3; ++j)
+    if (neighbour[oo][static_cast<size_t>(j)] == i) facing = j;
+  if (facing < 0) return false;
+  std::array<int, 6> slot{};
+  for (size_t a = 0; a < 6; ++a)
+    if ((slot[a] = slot_of(i, v[oo][a])) < 0) return false;
+  // The neighbour's conormal at the shared edge is this triangle's, reversed.
+  const auto& row = reference[oo].slope[static_cast<size_t>(facing)];
+  for (size_t a = 0; a < 6; ++a) pl.coef(k, slot[a]) -= weight * row[static_cast<Eigen::Index>(a)];
+  return true;
+}
+
+// Each edge's agreed gradient along its conormal, w_k = sum_a coef(k, a) x_a, and the map from
+// the slopes to II with the free edges' slopes eliminated: on a free edge the slope minimizing
+// s^T C^T Q C s, so the moment across it, n^T (dE/dII) n, vanishes. A shared edge takes the mean
+// of the fits that count on its two sides (weighted by their conditioning: any weights summing to
+// one keep the patch test), or where neither counts the mean of the two planes (consistent on
+// regular meshes only, and rare: beside the rim and other materials). The own plane's part adds
+// nothing to the slope (t is normal to it), so only the neighbour's half is written. A clamped
+// edge takes the stiff neighbour's plane.
 ShellTriangles::Plan ShellTriangles::plan(int i) const {
   const auto k0 = static_cast<size_t>(i);
+  const ShellReference& ref = reference[k0];
   Plan out;
-  out.free = free_edges(i);
+  out.edges = edges(i);
   const std::array<const PlateLayer*, 2> layers{&latex[k0], &resin[k0]};
   static const std::array<Eigen::Matrix2d, 3> unit{(Eigen::Matrix2d() << 1, 0, 0, 0).finished(),
                                                    (Eigen::Matrix2d() << 0, 1, 1, 0).finished(),
                                                    (Eigen::Matrix2d() << 0, 0, 0, 1).finished()};
-  static const std::array<Eigen::Matrix2d, 3> conormal{
-      (Eigen::Matrix2d() << 1, 1, 1, 1).finished(), (Eigen::Matrix2d() << 1, 0, 0, 0).finished(),
-      (Eigen::Matrix2d() << 0, 0, 0, 1).finished()};
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c)
       out.form(r, c) =
           plate_form(layers, unit[static_cast<size_t>(r)], unit[static_cast<size_t>(c)]);
-  Eigen::Matrix3d a;
-  for (size_t k = 0; k < 3; ++k) {
-    const auto row = static_cast<Eigen::Index>(k);
-    if (!out.free[k]) {
-      a.row(row) = fit[k0][k].transpose();
+  const bool own = fit_counts(i);
+  for (int k = 0; k < 3; ++k) {
+    const auto kk = static_cast<size_t>(k);
+    if (out.edges[kk] == Edge::free) continue;
+    const int o = neighbour[k0][kk];
+    const auto oo = static_cast<size_t>(o);
+    const Vec2& n = ref.conormal[kk];
+    // The plane's slope of neighbour o along this conormal, times `weight`, on its corners.
+    auto add_plane = [&](double weight) {
+      const Eigen::RowVector3d row = n.transpose() * reference[oo].gradient;
+      for (size_t c = 0; c < 3; ++c)
+        out.coef(k, slot_of(i, v[oo][c])) += weight * row[static_cast<Eigen::Index>(c)];
+    };
+    if (out.edges[kk] == Edge::clamped) {
+      add_plane(1.0);
       continue;
     }
-    Eigen::RowVector3d moment;
-    for (size_t j = 0; j < 3; ++j)
-      moment[static_cast<Eigen::Index>(j)] = plate_form(layers, conormal[k], unit[j]);
-    a.row(row) = moment / std::max(moment.norm(), 1e-300);
+    const double wi = own ? ref.quality : 0.0;
+    const double wo = fit_counts(o) ? reference[oo].quality : 0.0;
+    if (wi + wo == 0.0) {
+      add_plane(0.5);
+      continue;
+    }
+    const Eigen::Matrix<double, 3, 12> before = out.coef;
+    if (wi > 0.0) out.coef.row(k).head<6>() += wi / (wi + wo) * ref.slope[kk];
+    if (wo > 0.0 && !add_neighbour_slope(i, k, o, wo / (wi + wo), out)) {
+      out.coef = before;  // that fit's points are not all in the stencil: the planes' mean
+      add_plane(0.5);
+    }
   }
-  const Eigen::Matrix3d solve =
-      (a.transpose() * a + kPrior * Eigen::Matrix3d::Identity()).inverse();
-  Eigen::Matrix<double, 3, 6> scalars = Eigen::Matrix<double, 3, 6>::Zero();
-  for (int k = 0; k < 3; ++k)
-    if (!out.free[static_cast<size_t>(k)]) scalars.col(k) = a.row(k).transpose();
-  Eigen::Matrix3d mid;  // (H11, H12, H22) from (s0, s1, s2)
-  mid << -1, -1, 0, -1, 0, 0, -1, 0, -1;
-  for (int k = 0; k < 3; ++k)
-    if (!out.free[static_cast<size_t>(k)]) scalars.col(3 + k) = kPrior * mid.col(k);
-  out.map = solve * scalars;
+  // Free slopes s_f = -(C_f^T Q C_f)^-1 C_f^T Q C_k s_k.
+  Eigen::Matrix3d keep = Eigen::Matrix3d::Identity();
+  std::vector<Eigen::Index> f, kept;
+  for (Eigen::Index k = 0; k < 3; ++k)
+    (out.edges[static_cast<size_t>(k)] == Edge::free ? f : kept).push_back(k);
+  if (!f.empty()) {
+    const Eigen::MatrixXd cf = ref.curvature(Eigen::all, f);
+    const Eigen::MatrixXd ck = ref.curvature(Eigen::all, kept);
+    const Eigen::MatrixXd qf = cf.transpose() * out.form;
+    const Eigen::MatrixXd m = (qf * cf).completeOrthogonalDecomposition().solve(qf * ck);
+    for (size_t a = 0; a < f.size(); ++a) {
+      keep(f[a], f[a]) = 0.0;
+      for (size_t b = 0; b < kept.size(); ++b)
+        keep(f[a], kept[b]) = -m(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+    }
+  }
+  out.map = ref.curvature * keep;
   return out;
 }
 
@@ -178,14 +229,14 @@ PlateLayer plate_at(const Eigen::Matrix2d& metric, double d, double nu) {
   return {metric.inverse(), 0.5 * std::sqrt(det), d, nu};
 }
 
-Eigen::Matrix2d metric_of(const Points& x, const std::array<int, 6>& p) {
+Eigen::Matrix2d metric_of(const Points& x, const std::array<int, 12>& p) {
   return triangle_metric(x.col(p[0]), x.col(p[1]), x.col(p[2]));
 }
 
 }  // namespace
 
 void ShellTriangles::add_mesh(const std::vector<std::array<int, 3>>& triangles,
-                              const Points& reference, double d, double nu) {
+                              const Points& reference_x, double d, double nu) {
   if (!(d >= 0.0) || !(nu >= 0.0 && nu < 1.0))
     throw std::invalid_argument("shell triangles: a negative stiffness or nu outside [0, 1)");
   // Each directed edge (a, b) with its triangle; the neighbour across it holds (b, a).
@@ -195,36 +246,47 @@ void ShellTriangles::add_mesh(const std::vector<std::array<int, 3>>& triangles,
     for (size_t k = 0; k < 3; ++k)
       owner[{triangles[t][k], triangles[t][(k + 1) % 3]}] = first + static_cast<int>(t);
   for (const auto& t : triangles) {
-    std::array<int, 6> ids{t[0], t[1], t[2], t[0], t[1], t[2]};
+    std::array<int, 12> ids{};
+    for (size_t a = 0; a < 12; ++a) ids[a] = t[a < 3 ? a : (a < 6 ? a - 3 : (a - 6) / 2)];
     std::array<int, 3> across{-1, -1, -1};
+    std::array<bool, 3> has{};
+    std::array<Vec2, 3> corner, far;
     for (size_t k = 0; k < 3; ++k) {
+      corner[k] = reference_x.col(t[k]).head<2>();
       const auto o = owner.find({t[(k + 2) % 3], t[(k + 1) % 3]});
       if (o == owner.end()) continue;
       across[k] = o->second;
       const auto& u = triangles[static_cast<size_t>(o->second - first)];
       for (int c : u)
         if (c != t[(k + 1) % 3] && c != t[(k + 2) % 3]) ids[3 + k] = c;
+      has[k] = true;
     }
-    const Eigen::Matrix2d g = metric_of(reference, ids);
+    // A neighbour sharing its far corner with another leaves five distinct points: not posed.
+    for (size_t k = 0; k < 3; ++k) far[k] = reference_x.col(ids[3 + k]).head<2>();
+    if (ids[3] == ids[4] || ids[4] == ids[5] || ids[3] == ids[5]) has = {};
+    reference.push_back(reference_of(corner, far, has));
+    const Eigen::Matrix2d g = metric_of(reference_x, ids);
     latex.push_back(plate_at(g, d, nu));
-    // Each far corner's row of the fit: (u^2 - u, 2 uv, v^2 - v) / 2 at its (u, v).
-    Eigen::Matrix2d e;
-    e << (reference.col(t[1]) - reference.col(t[0])).head<2>(),
-        (reference.col(t[2]) - reference.col(t[0])).head<2>();
-    const Eigen::Matrix2d e_inv = e.inverse();
-    std::array<Eigen::Vector3d, 3> rows;
-    for (size_t k = 0; k < 3; ++k) {
-      const Vec2 uv = e_inv * (reference.col(ids[3 + k]) - reference.col(t[0])).head<2>();
-      rows[k] = Eigen::Vector3d(0.5 * (uv.x() * uv.x() - uv.x()), uv.x() * uv.y(),
-                                0.5 * (uv.y() * uv.y() - uv.y()));
-    }
-    fit.push_back(rows);
     resin.emplace_back();
     v.push_back(ids);
     neighbour.push_back(across);
     natural_metric.push_back(g);
     frame_metric.push_back(g);
   }
+  link_neighbours();
+}
+
+void ShellTriangles::link_neighbours() {
+  for (size_t t = 0; t < v.size(); ++t)
+    for (size_t k = 0; k < 3; ++k) {
+      const int o = neighbour[t][k];
+      v[t][6 + 2 * k] = v[t][7 + 2 * k] = v[t][k];
+      if (o < 0) continue;
+      size_t slot = 6 + 2 * k;
+      for (size_t j = 0; j < 3; ++j)
+        if (neighbour[static_cast<size_t>(o)][j] != static_cast<int>(t))
+          v[t][std::min(slot++, 7 + 2 * k)] = v[static_cast<size_t>(o)][3 + j];
+    }
 }
 
 void ShellTriangles::filter(const std::vector<bool>& keep) {
@@ -241,134 +303,146 @@ void ShellTriangles::filter(const std::vector<bool>& keep) {
     }
   keep_where(v, keep);
   keep_where(neighbour, keep);
-  keep_where(fit, keep);
+  keep_where(reference, keep);
   keep_where(latex, keep);
   keep_where(resin, keep);
   keep_where(natural_metric, keep);
   keep_where(frame_metric, keep);
+  link_neighbours();
 }
 
 double ShellTriangles::plate(int i) const {
   return latex[static_cast<size_t>(i)].d + resin[static_cast<size_t>(i)].d;
 }
 
-std::array<bool, 3> ShellTriangles::free_edges(int i) const {
-  const auto k0 = static_cast<size_t>(i);
-  std::array<bool, 3> free{};
-  for (size_t k = 0; k < 3; ++k) {
-    const int o = neighbour[k0][k];
-    free[k] = o < 0 || plate(o) < kSofter * plate(i);
-  }
-  return free;
-}
+namespace {
 
-double ShellTriangles::energy(int i, const Points& x) const {
-  const auto& p = v[static_cast<size_t>(i)];
-  const Plan pl = plan(i);
-  Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
-  for (int m = 0; m < 6; ++m) {
-    if (pl.free[static_cast<size_t>(m % 3)]) continue;
-    std::array<P3<double>, 4> q;
-    for (size_t j = 0; j < 4; ++j) {
-      const auto col = x.col(j < 3 ? p[j] : p[3 + static_cast<size_t>(m % 3)]);
-      q[j] = {col.x(), col.y(), col.z()};
-    }
-    g[m] = geometric(m, q);
-  }
-  const Eigen::Vector3d h = pl.map * g;
-  return h.dot(pl.form * h);
-}
-
-// The scalars' values and gradients (6 x 18), and with `second` each one's Hessian (12 x 12 over
-// its four points), by first- or second-order dual numbers over 12 coordinates.
-struct ShellScalars {
-  Eigen::Matrix<double, 6, 1> value = Eigen::Matrix<double, 6, 1>::Zero();
-  Eigen::Matrix<double, 6, 18> gradient = Eigen::Matrix<double, 6, 18>::Zero();
-  std::array<Eigen::Matrix<double, 12, 12>, 6> hessian{};
+// A triangle's state for its kernel: the unit normal t = c / |c| (c = d1 x d2, d1 = x1 - x0,
+// d2 = x2 - x0), the agreed gradients w_k (columns), the slopes s_k = t . w_k, II = map s and the
+// energy's derivative in the slopes.
+struct ShellState {
+  Vec3 d1, d2, t;
+  double c_norm = 0.0;  // 0: a face collapsed to a line, which has no normal and reads nothing
+  Eigen::Matrix3d w;
+  Eigen::Vector3d s, ii, de_ds;
 };
 
-void ShellTriangles::scalars(int i, const Points& x, const Plan& pl, bool second,
-                             ShellScalars& out) const {
-  const auto& p = v[static_cast<size_t>(i)];
-  for (int m = 0; m < 6; ++m) {
-    if (pl.free[static_cast<size_t>(m % 3)]) continue;
-    const std::array<int, 4> pts{p[0], p[1], p[2], p[3 + m % 3]};
-    if (!second) {
-      std::array<P3<Grad>, 4> q;
-      for (int c = 0; c < 12; ++c)
-        q[static_cast<size_t>(c / 3)][c % 3] =
-            Grad(x(c % 3, pts[static_cast<size_t>(c / 3)]), 12, c);
-      const Grad g = geometric(m, q);
-      out.value[m] = g.value();
-      for (int c = 0; c < 12; ++c) out.gradient(m, stencil_dof(m, c)) += g.derivatives()[c];
-      continue;
-    }
-    // The scalars depend on differences only: differentiate over p1 - p0, p2 - p0, p3 - p0 (9
-    // variables, not 12) and map back with d = L x.
-    std::array<P3<Jet>, 4> q{P3<Jet>{Jet(0.0), Jet(0.0), Jet(0.0)}};
-    for (int c = 0; c < 9; ++c)
-      q[static_cast<size_t>(1 + c / 3)][c % 3] =
-          Jet::variable(x(c % 3, pts[static_cast<size_t>(1 + c / 3)]) - x(c % 3, pts[0]), c);
-    const Jet g = geometric(m, q);
-    static const Eigen::Matrix<double, 9, 12> diff = [] {
-      Eigen::Matrix<double, 9, 12> l = Eigen::Matrix<double, 9, 12>::Zero();
-      for (int j = 0; j < 3; ++j) {
-        l.block<3, 3>(3 * j, 0) = -Eigen::Matrix3d::Identity();
-        l.block<3, 3>(3 * j, 3 * (j + 1)) = Eigen::Matrix3d::Identity();
-      }
-      return l;
-    }();
-    out.value[m] = g.v;
-    const Eigen::Matrix<double, 12, 1> grad = diff.transpose() * g.g;
-    for (int c = 0; c < 12; ++c) out.gradient(m, stencil_dof(m, c)) += grad[c];
-    out.hessian[static_cast<size_t>(m)] = diff.transpose() * g.h * diff;
+ShellState state_of(const ShellTriangles::Plan& pl, const std::array<int, 12>& p, const Points& x) {
+  ShellState st;
+  st.d1 = x.col(p[1]) - x.col(p[0]);
+  st.d2 = x.col(p[2]) - x.col(p[0]);
+  const Vec3 c = st.d1.cross(st.d2);
+  st.c_norm = c.norm();
+  st.w.setZero();
+  for (size_t a = 0; a < 12; ++a)
+    st.w += x.col(p[a]) * pl.coef.col(static_cast<Eigen::Index>(a)).transpose();
+  st.t = st.c_norm > 0.0 ? Vec3(c / st.c_norm) : Vec3::Zero();
+  st.s = st.w.transpose() * st.t;
+  st.ii = pl.map * st.s;
+  st.de_ds = 2.0 * pl.map.transpose() * (pl.form * st.ii);
+  return st;
+}
+
+// The energy's gradient over d1, d2, w0, w1, w2: dE/dw_k = dE/ds_k t, and through the normal
+// dE/dc = P y / |c| (P = I - t t^T, y = sum_k dE/ds_k w_k), dc = dd1 x d2 + d1 x dd2.
+Eigen::Matrix<double, 15, 1> reduced_gradient(const ShellState& st) {
+  Eigen::Matrix<double, 15, 1> g = Eigen::Matrix<double, 15, 1>::Zero();
+  if (st.c_norm == 0.0) return g;
+  const Vec3 y = st.w * st.de_ds;
+  const Vec3 dc = (y - st.t * st.t.dot(y)) / st.c_norm;
+  g.segment<3>(0) = st.d2.cross(dc);
+  g.segment<3>(3) = dc.cross(st.d1);
+  for (int k = 0; k < 3; ++k) g.segment<3>(6 + 3 * k) = st.de_ds[k] * st.t;
+  return g;
+}
+
+// The same energy's Hessian over those 15 variables, by second-order dual numbers.
+Eigen::Matrix<double, 15, 15> reduced_hessian(const ShellTriangles::Plan& pl,
+                                              const ShellState& st) {
+  if (st.c_norm == 0.0) return Eigen::Matrix<double, 15, 15>::Zero();
+  std::array<Jet, 3> d1, d2, c;
+  for (int j = 0; j < 3; ++j) {
+    d1[static_cast<size_t>(j)] = Jet::variable(st.d1[j], j);
+    d2[static_cast<size_t>(j)] = Jet::variable(st.d2[j], 3 + j);
   }
+  c[0] = d1[1] * d2[2] - d1[2] * d2[1];
+  c[1] = d1[2] * d2[0] - d1[0] * d2[2];
+  c[2] = d1[0] * d2[1] - d1[1] * d2[0];
+  const Jet inv = Jet(1.0) / sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  std::array<Jet, 3> s;
+  for (int k = 0; k < 3; ++k) {
+    Jet dot(0.0);
+    for (int j = 0; j < 3; ++j)
+      dot = dot + c[static_cast<size_t>(j)] * Jet::variable(st.w(j, k), 6 + 3 * k + j);
+    s[static_cast<size_t>(k)] = dot * inv;
+  }
+  Jet e(0.0);
+  std::array<Jet, 3> ii;
+  for (int r = 0; r < 3; ++r)
+    ii[static_cast<size_t>(r)] = s[0] * pl.map(r, 0) + s[1] * pl.map(r, 1) + s[2] * pl.map(r, 2);
+  for (int r = 0; r < 3; ++r)
+    for (int q = 0; q < 3; ++q)
+      if (pl.form(r, q) != 0.0)
+        e = e + ii[static_cast<size_t>(r)] * ii[static_cast<size_t>(q)] * pl.form(r, q);
+  return e.h;
+}
+
+// The 15 reduced variables as a linear map of the stencil's 36 coordinates.
+Eigen::Matrix<double, 15, 36> reduced_map(const ShellTriangles::Plan& pl) {
+  Eigen::Matrix<double, 15, 36> l = Eigen::Matrix<double, 15, 36>::Zero();
+  const Eigen::Matrix3d id = Eigen::Matrix3d::Identity();
+  l.block<3, 3>(0, 0) = l.block<3, 3>(3, 0) = -id;
+  l.block<3, 3>(0, 3) = l.block<3, 3>(3, 6) = id;
+  for (int k = 0; k < 3; ++k)
+    for (int a = 0; a < 12; ++a) l.block<3, 3>(6 + 3 * k, 3 * a) += pl.coef(k, a) * id;
+  return l;
+}
+
+}  // namespace
+
+double ShellTriangles::energy(int i, const Points& x) const {
+  const Plan pl = plan(i);
+  const ShellState st = state_of(pl, v[static_cast<size_t>(i)], x);
+  return st.ii.dot(pl.form * st.ii);
 }
 
 void ShellTriangles::add_forces(const Points& x, const Points*, int begin, int end,
                                 Points& f) const {
-  ShellScalars sc;
   for (int i = begin; i < end; ++i) {
     if (!active(i)) continue;
     const Plan pl = plan(i);
-    sc.value.setZero();
-    sc.gradient.setZero();
-    scalars(i, x, pl, false, sc);
-    // E = h^T Q h, h = L g: dE/dx = 2 (Q h)^T L dg/dx.
-    const Eigen::Matrix<double, 6, 1> de_dg =
-        2.0 * pl.map.transpose() * (pl.form * (pl.map * sc.value));
-    const Eigen::Matrix<double, 18, 1> grad = sc.gradient.transpose() * de_dg;
     const auto& p = v[static_cast<size_t>(i)];
-    for (int c = 0; c < 6; ++c) f.col(p[c]) -= grad.segment<3>(3 * c);
+    const ShellState st = state_of(pl, p, x);
+    const Eigen::Matrix<double, 15, 1> g = reduced_gradient(st);
+    f.col(p[0]) += g.segment<3>(0) + g.segment<3>(3);
+    f.col(p[1]) -= g.segment<3>(0);
+    f.col(p[2]) -= g.segment<3>(3);
+    for (size_t a = 0; a < 12; ++a) {
+      const auto aa = static_cast<Eigen::Index>(a);
+      f.col(p[a]) -= (pl.coef(0, aa) * st.de_ds[0] + pl.coef(1, aa) * st.de_ds[1] +
+                      pl.coef(2, aa) * st.de_ds[2]) *
+                     st.t;
+    }
   }
 }
 
-Eigen::Matrix<double, 18, 18> ShellTriangles::hessian(int i, const Points& x, bool project) const {
+Eigen::Matrix<double, 36, 36> ShellTriangles::hessian(int i, const Points& x, bool project) const {
   const Plan pl = plan(i);
-  ShellScalars sc;
-  scalars(i, x, pl, true, sc);
-  // 2 (L dg)^T Q (L dg) + sum_m dE/dg_m Hess g_m.
-  const Eigen::Matrix<double, 3, 18> jh = pl.map * sc.gradient;
-  Eigen::Matrix<double, 18, 18> out = 2.0 * jh.transpose() * pl.form * jh;
-  const Eigen::Matrix<double, 6, 1> de_dg =
-      2.0 * pl.map.transpose() * (pl.form * (pl.map * sc.value));
-  for (int m = 0; m < 6; ++m) {
-    if (pl.free[static_cast<size_t>(m % 3)] || de_dg[m] == 0.0) continue;
-    for (int r = 0; r < 12; ++r)
-      for (int c = 0; c < 12; ++c)
-        out(stencil_dof(m, r), stencil_dof(m, c)) +=
-            de_dg[m] * sc.hessian[static_cast<size_t>(m)](r, c);
-  }
-  const Eigen::Matrix<double, 18, 18> sym = 0.5 * (out + out.transpose());
-  return project ? project_psd(sym) : sym;
+  const ShellState st = state_of(pl, v[static_cast<size_t>(i)], x);
+  Eigen::Matrix<double, 15, 15> h = reduced_hessian(pl, st);
+  h = 0.5 * (h + h.transpose());
+  if (project) h = project_psd(h);
+  const Eigen::Matrix<double, 15, 36> l = reduced_map(pl);
+  return l.transpose() * h * l;
 }
 
 void ShellTriangles::add_stiffness_estimate(const Points& x, std::vector<double>& diag) const {
   for (int i = 0; i < size(); ++i) {
     if (!active(i)) continue;
-    const Eigen::Matrix<double, 18, 18> h = hessian(i, x, true);
+    const Eigen::Matrix<double, 36, 36> h = hessian(i, x, true);
     const auto& p = v[static_cast<size_t>(i)];
-    for (int c = 0; c < 6; ++c) diag[p[c]] += h.block<3, 3>(3 * c, 3 * c).trace() / 3.0;
+    for (int c = 0; c < 12; ++c)
+      diag[p[static_cast<size_t>(c)]] += h.block<3, 3>(3 * c, 3 * c).trace() / 3.0;
   }
 }
 
@@ -419,14 +493,15 @@ void ShellTriangles::carry(const ShellTriangles& old, const Rebuild& r) {
     std::array<int, 3> corners{old.v[k][0], old.v[k][1], old.v[k][2]}, mapped;
     if (!r.map(corners, mapped)) continue;
     renumber[k] = size();
-    std::array<int, 6> ids{mapped[0], mapped[1], mapped[2], mapped[0], mapped[1], mapped[2]};
+    std::array<int, 12> ids{};
+    for (size_t a = 0; a < 12; ++a) ids[a] = mapped[a < 3 ? a : (a < 6 ? a - 3 : (a - 6) / 2)];
     for (size_t c = 0; c < 3; ++c) {
       const int far = r.new_of_old[static_cast<size_t>(old.v[k][3 + c])];
       if (old.neighbour[k][c] >= 0 && far >= 0) ids[3 + c] = far;
     }
     v.push_back(ids);
     neighbour.push_back(old.neighbour[k]);
-    fit.push_back(old.fit[k]);
+    reference.push_back(old.reference[k]);
     latex.push_back(old.latex[k]);
     resin.push_back(old.resin[k]);
     natural_metric.push_back(old.natural_metric[k]);
@@ -438,6 +513,7 @@ void ShellTriangles::carry(const ShellTriangles& old, const Rebuild& r) {
       if (o >= 0) o = renumber[static_cast<size_t>(o)];
       if (o < 0) v[t][3 + c] = v[t][c];
     }
+  link_neighbours();
 }
 
 }  // namespace membra

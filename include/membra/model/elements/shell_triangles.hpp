@@ -1,22 +1,23 @@
 #pragma once
 // Shell triangles: the continuum sheet's bending as a Kirchhoff plate per triangle, its
-// curvature read from a quadratic fitted to the triangle and its three neighbours (rotation-free
-// shell triangles; docs/model.md, "Bending"). Triangle (x0, x1, x2) with, across the edge
-// opposite corner k, the neighbour's far corner o_k: the six particles of its stencil. The
-// heights of the far corners over the face's plane fix the quadratic through the corners
-// (height 0) and them, whose Hessian in the edge coordinates is the second fundamental form II
-// (exact for a quadratic surface wherever the fit is well posed, up to a weak pull towards the
-// mid-edge normals' estimate that keeps a degenerate fit bounded).
-// Each layer stores
+// curvature read as a boundary integral (docs/model.md, "Bending"). Each edge's outward slope,
+// measured from the triangle's plane, comes from one surface gradient that both triangles sharing
+// the edge agree on: the mean of the quadratics fitted to each triangle and its three neighbours,
+// at the edge's midpoint. So the curvature integrated over any patch telescopes to its rim (the
+// weak patch test), and it is exact on any quadratic surface. II = (1/A) sum_k l_k s_k n_k n_k^T
+// on the natural sheet, n_k the edge's outward conormal, s_k its slope. Each layer stores
 //   A (D/2) [nu tr(M)^2 + (1 - nu) tr(M^2)],   M = G^-1 II,
 // G and A its rest metric and area, D and nu its plate: Kirchhoff's energy density
-// (D/2)(4H^2 - 2(1 - nu)K), a positive semi-definite form in M, so the energy is bounded below
-// on any configuration (unlike a Gaussian-curvature term added to dihedral hinges). A free edge
-// (the rim, or a resin triangle's edge against latex) meets no height: no moment crosses it
-// instead, so across a resin edge the kink is left to the latex, as plates in series share it. Two
+// (D/2)(4H^2 - 2(1 - nu)K), a positive semi-definite form, so the energy is bounded below. Two
 // layers as the membrane's: the latex (rest metric following the release) and, where the pattern
-// covers the triangle, the resin at rest in its impregnated shape. The gradient and Hessian are
-// exact, by dual numbers.
+// covers the triangle, the resin at rest in its impregnated shape. Edge by edge:
+//  - shared (a neighbour of like plate): the mean gradient of the well-posed fits of the two,
+//    or, where neither is, of their two planes;
+//  - free (the rim, or a much softer neighbour): no moment crosses it, its slope is the one that
+//    minimizes the triangle's energy;
+//  - clamped (a much stiffer neighbour, the latex against resin): the stiff plate's plane is the
+//    edge's slope, so the kink goes to the latex, as plates in series share it.
+// The gradient is analytic and the Hessian exact, by dual numbers.
 #include <array>
 #include <string_view>
 #include <vector>
@@ -36,25 +37,37 @@ struct PlateLayer {
   double d = 0.0, nu = 0.0;
 };
 
-struct ShellScalars;  // shell_triangles.cpp: a triangle's six scalars and their derivatives
+// What a triangle's curvature reading takes from the natural sheet, fixed when the mesh is made.
+struct ShellReference {
+  Eigen::Matrix<double, 2, 3> gradient =
+      Eigen::Matrix<double, 2, 3>::Zero();  // of its corners' hat functions (1/m)
+  std::array<Vec2, 3> conormal{};           // edge k's outward unit conormal
+  // The edges' slopes s to II in the edge coordinates (II11, II12, II22): column k is
+  // (l_k / A) (a^2, a b, b^2), (a, b) the conormal's components along the two edges from corner 0.
+  Eigen::Matrix3d curvature = Eigen::Matrix3d::Zero();
+  // The fitted quadratic's derivative along edge k's conormal at its midpoint, a combination of
+  // the triangle's six points (corners, then far corners).
+  std::array<Eigen::Matrix<double, 1, 6>, 3> slope{};
+  double quality = 0.0;  // the fit's smallest singular value; 0 where it is not posed
+};
 
 struct ShellTriangles {
-  static constexpr int kArity = 6;
+  static constexpr int kArity = 12;
   static constexpr std::string_view kName = "shell_triangles";
   static constexpr EnergyKind kEnergy = EnergyKind::bending;
 
-  // x0, x1, x2 (counter-clockwise on the natural sheet), then the far corner across the edge
-  // opposite each (the triangle's own corner k where that edge is on the rim: see `neighbour`).
-  std::vector<std::array<int, 6>> v;
+  // x0, x1, x2 (counter-clockwise on the natural sheet); in slot 3 + k the far corner across the
+  // edge opposite corner k; in slots 6 + 2k and 7 + 2k that neighbour's own far corners across its
+  // other two edges (its fit's points). An absent point's slot holds the triangle's corner k.
+  std::vector<std::array<int, 12>> v;
   std::vector<std::array<int, 3>> neighbour;  // the triangle across each edge, -1 on the rim
-  // Each far corner's row of the curvature fit (shell_triangles.cpp), from the natural sheet.
-  std::vector<std::array<Eigen::Vector3d, 3>> fit;
+  std::vector<ShellReference> reference;
   std::vector<PlateLayer> latex, resin;
   // Material state: the latex's metric on the natural sheet and when the release began.
   std::vector<Eigen::Matrix2d> natural_metric, frame_metric;
 
   int size() const { return static_cast<int>(v.size()); }
-  std::array<int, 6> ids(int i) const { return v[static_cast<size_t>(i)]; }
+  std::array<int, 12> ids(int i) const { return v[static_cast<size_t>(i)]; }
   bool active(int i) const { return latex[static_cast<size_t>(i)].d > 0.0; }
   // A plate of stiffness d and Poisson ratio nu on every triangle of a mesh of counter-clockwise
   // triangles at rest at `reference` (m). Throws std::invalid_argument for a degenerate triangle
@@ -68,7 +81,7 @@ struct ShellTriangles {
   // Kernel.
   double energy(int i, const Points& x) const;
   void add_forces(const Points& x, const Points* v, int begin, int end, Points& f) const;
-  Eigen::Matrix<double, 18, 18> hessian(int i, const Points& x, bool project) const;
+  Eigen::Matrix<double, 36, 36> hessian(int i, const Points& x, bool project) const;
   void add_stiffness_estimate(const Points& x, std::vector<double>& diag) const;
   ElementStress stress(int, const Points&, double) const { return {}; }  // no in-plane stress
 
@@ -92,23 +105,35 @@ struct ShellTriangles {
   ResinFootprint footprint(int, const Points&) const { return {}; }
   void set_resin_fraction(int, double, const ReleaseLevel&) {}
   double resin_rate(int, const Points&, const Points&, const ReleaseLevel&) const { return 0.0; }
-  // The edges whose far corner's height is free: on the rim, or across from a neighbour of less
-  // than kSofter of this triangle's plate (a resin triangle next to latex).
+  // How each edge's slope is read: shared with a neighbour of like plate, free (the rim, or a
+  // neighbour of less than kSofter of this triangle's plate: a resin triangle's edge against
+  // latex), or clamped to a neighbour of more than 1/kSofter of it (the latex against resin).
+  enum class Edge { shared, free, clamped };
   static constexpr double kSofter = 0.5;
+  std::array<Edge, 3> edges(int i) const;
   std::array<bool, 3> free_edges(int i) const;
+  // A triangle's own fit counts where it is posed and none of its edges meets another material.
+  bool fit_counts(int i) const;
 
-  // How triangle i reads its curvature H = (H11, H12, H22) (edge coordinates) from its six
-  // geometric scalars g (far corners' heights, mid-edge readings): H = map g, and its energy
-  // H^T form H (shell_triangles.cpp).
+  // How triangle i reads its curvature (shell_triangles.cpp): each edge's slope s_k = t . w_k,
+  // t its unit normal and w_k = sum_a coef(k, a) x_a (the agreed gradient along the conormal);
+  // II = map s in edge coordinates, free edges' slopes eliminated; energy II^T form II.
   struct Plan {
-    std::array<bool, 3> free{};
-    Eigen::Matrix<double, 3, 6> map;
-    Eigen::Matrix3d form;
+    std::array<Edge, 3> edges{};
+    Eigen::Matrix<double, 3, 12> coef = Eigen::Matrix<double, 3, 12>::Zero();
+    Eigen::Matrix3d map = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d form = Eigen::Matrix3d::Zero();
   };
   Plan plan(int i) const;
 
  private:
-  void scalars(int i, const Points& x, const Plan& pl, bool second, ShellScalars& out) const;
+  // Slots 6..11 from each neighbour's far corners (after the mesh, a filter or a carry).
+  void link_neighbours();
+  // The slot of triangle i's stencil that holds particle id, or -1.
+  int slot_of(int i, int id) const;
+  // Adds `weight` times neighbour o's fit slope at its edge facing i into row k of coef (false
+  // where a point of that fit is not in i's stencil).
+  bool add_neighbour_slope(int i, int k, int o, double weight, Plan& pl) const;
 };
 
 }  // namespace membra
