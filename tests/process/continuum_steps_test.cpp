@@ -7,6 +7,7 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/output/report.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {
@@ -31,6 +32,18 @@ TEST(ContinuumSteps, RadialShrinkRufflesIntoASaddle) {
   EXPECT_LT(q.k2, 0.0);
   EXPECT_LT(q.k1 / -q.k2, 2.0);
   EXPECT_GT(q.k1 / -q.k2, 0.5);
+  // report.json says which model ran and the mesh as made and asked for (the contract a script
+  // reruns a scene at half the element size with).
+  const nlohmann::json j = make_report(scene, r);
+  EXPECT_EQ(j["model"], "continuum");
+  const nlohmann::json& mesh = j["mesh"];
+  EXPECT_EQ(mesh["vertices"], r.prepared.membrane.sheet.model.num_particles());
+  EXPECT_GT(mesh["triangles"].get<int>(), mesh["vertices"].get<int>());
+  EXPECT_EQ(mesh["max_edge"], 20.0);
+  EXPECT_EQ(mesh["elements_across"], 4);
+  EXPECT_GT(mesh["min_angle_deg"].get<double>(), 20.0);
+  EXPECT_EQ(mesh["laws"]["sheet"], "neo_hookean");
+  EXPECT_EQ(mesh["wrinkling"], "full");
 }
 
 TEST(ContinuumSteps, ASpringFamilyGrowthIsRefusedByName) {
