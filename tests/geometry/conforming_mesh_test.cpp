@@ -93,6 +93,23 @@ TEST(ConformingMesh, MeshesADiskInsideItsPolygon) {
   EXPECT_NEAR(area(m), 32 * std::sin(2 * std::numbers::pi / 64), 1e-12);
 }
 
+// A fine mesh of a finely sampled circle (100 mm across, chords of about 2.8 mm split by the
+// mesher's 2.5 mm): no sliver between a chord and its two halves, every triangle at least the
+// requested angle, the area the polygon's. Such slivers (three split points in a line, zero
+// area) once made `membra run` refuse disk sheets at max_edge 3 mm and below.
+TEST(ConformingMesh, SplittingACurvedOutlinesChordsLeavesNoSliver) {
+  MeshRequest r;
+  const int n = 112;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * std::numbers::pi * k / n;
+    r.outline.emplace_back(0.05 + 0.05 * std::cos(t), 0.05 + 0.05 * std::sin(t));
+  }
+  r.size = [](const Vec2&) { return 0.0025; };
+  const PlanarMesh m = conforming_mesh(r);
+  EXPECT_GT(m.min_angle_deg(), r.min_angle_deg - 1e-9);
+  EXPECT_NEAR(area(m), 0.5 * n * 0.0025 * std::sin(2 * std::numbers::pi / n), 1e-12);
+}
+
 TEST(ConformingMesh, RefusesTooManyVerticesAndADegenerateOutline) {
   MeshRequest r = square_with_piece(0.001);
   r.max_vertices = 1000;
