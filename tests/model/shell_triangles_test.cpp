@@ -108,6 +108,41 @@ TEST(ShellTriangles, OnAGridOfRightTrianglesTheyStoreThePlateEnergyToo) {
   EXPECT_NEAR(set_energy(inner, b.saddle) / unit, 1.0, 0.03);
 }
 
+// On a jittered patch (no two neighbours form a parallelogram, so the mean of two planes is not
+// exact there), a quadratic graph z = X^T H X / 2 of small slope: every triangle whose own fit
+// and whose neighbours' fits count reads II = H (times the normal's tilt, 1 - O(slope^2)) and
+// stores the plate's A (D/2)[nu tr(H)^2 + (1 - nu) tr(H^2)] within 0.1 %, through the fits.
+TEST(ShellTriangles, OnAJitteredPatchTheFittedGradientsReadAQuadraticExactly) {
+  TriPatch m = tri_patch(12, 0.002, 0.3);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.3, 0.3);
+  std::vector<bool> rim(static_cast<size_t>(m.x.cols()), false);
+  for (int p : m.rim) rim[static_cast<size_t>(p)] = true;
+  for (int p = 0; p < m.x.cols(); ++p)
+    if (!rim[static_cast<size_t>(p)]) m.x.col(p) += Vec3(0.002 * u(rng), 0.002 * u(rng), 0.0);
+  ShellTriangles s;
+  s.add_mesh(m.triangles, m.x, kD, 0.5);
+  Eigen::Matrix2d h;
+  h << 0.5, 0.2, 0.2, -0.3;  // 1/m
+  Points x = m.x;
+  const Vec2 centre = m.x.rowwise().mean().head<2>();
+  for (int p = 0; p < x.cols(); ++p) {
+    const Vec2 d = m.x.col(p).head<2>() - centre;
+    x(2, p) = 0.5 * d.dot(h * d);
+  }
+  const double density = 0.5 * kD * (0.5 * h.trace() * h.trace() + 0.5 * (h * h).trace());
+  int checked = 0;
+  for (int i = 0; i < s.size(); ++i) {
+    const auto& n = s.neighbour[static_cast<size_t>(i)];
+    if (!s.fit_counts(i) || !s.fit_counts(n[0]) || !s.fit_counts(n[1]) || !s.fit_counts(n[2]))
+      continue;
+    EXPECT_GT(s.plan(i).coef.rightCols<6>().norm(), 0.0) << "the neighbours' fits are read";
+    EXPECT_NEAR(s.energy(i, x) / (s.latex[static_cast<size_t>(i)].area * density), 1.0, 1e-3) << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+}
+
 // An interior corner of three triangles: two neighbours share their far corner, so the
 // triangle's own fit is not posed (five distinct points) and it reads its edges from its
 // neighbours' planes. On a sphere it stores a finite, positive energy of the plate's order.

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
-#include <unsupported/Eigen/AutoDiff>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -181,8 +180,9 @@ ShellTriangles::Plan ShellTriangles::plan(int i) const {
     // The plane's slope of neighbour o along this conormal, times `weight`, on its corners.
     auto add_plane = [&](double weight) {
       const Eigen::RowVector3d row = n.transpose() * reference[oo].gradient;
-      for (size_t c = 0; c < 3; ++c)
-        out.coef(k, slot_of(i, v[oo][c])) += weight * row[static_cast<Eigen::Index>(c)];
+      for (size_t c = 0; c < 3; ++c)  // the neighbour's corners: this edge's and slot 3 + k
+        if (const int a = slot_of(i, v[oo][c]); a >= 0)
+          out.coef(k, a) += weight * row[static_cast<Eigen::Index>(c)];
     };
     if (out.edges[kk] == Edge::clamped) {
       add_plane(1.0);
@@ -201,21 +201,16 @@ ShellTriangles::Plan ShellTriangles::plan(int i) const {
       add_plane(0.5);
     }
   }
-  // Free slopes s_f = -(C_f^T Q C_f)^-1 C_f^T Q C_k s_k.
+  // Free slopes s_f = -(B_ff)^-1 B_fk s_k, B = C^T Q C, in fixed 3 x 3 blocks (this runs in every
+  // kernel call): with the masks P_f and P_k, (P_f B P_f + P_k) is B_ff padded with the identity.
   Eigen::Matrix3d keep = Eigen::Matrix3d::Identity();
-  std::vector<Eigen::Index> f, kept;
-  for (Eigen::Index k = 0; k < 3; ++k)
-    (out.edges[static_cast<size_t>(k)] == Edge::free ? f : kept).push_back(k);
-  if (!f.empty()) {
-    const Eigen::MatrixXd cf = ref.curvature(Eigen::all, f);
-    const Eigen::MatrixXd ck = ref.curvature(Eigen::all, kept);
-    const Eigen::MatrixXd qf = cf.transpose() * out.form;
-    const Eigen::MatrixXd m = (qf * cf).completeOrthogonalDecomposition().solve(qf * ck);
-    for (size_t a = 0; a < f.size(); ++a) {
-      keep(f[a], f[a]) = 0.0;
-      for (size_t b = 0; b < kept.size(); ++b)
-        keep(f[a], kept[b]) = -m(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
-    }
+  if (out.edges[0] == Edge::free || out.edges[1] == Edge::free || out.edges[2] == Edge::free) {
+    Eigen::Matrix3d pf = Eigen::Matrix3d::Zero();
+    for (int k = 0; k < 3; ++k) pf(k, k) = out.edges[static_cast<size_t>(k)] == Edge::free;
+    const Eigen::Matrix3d pk = Eigen::Matrix3d::Identity() - pf;
+    const Eigen::Matrix3d b = ref.curvature.transpose() * out.form * ref.curvature;
+    const Eigen::Matrix3d padded = pf * b * pf + pk;
+    keep = pk - padded.completeOrthogonalDecomposition().solve(Eigen::Matrix3d(pf * b * pk));
   }
   out.map = ref.curvature * keep;
   return out;
@@ -244,7 +239,13 @@ void ShellTriangles::add_mesh(const std::vector<std::array<int, 3>>& triangles,
   const int first = size();
   for (size_t t = 0; t < triangles.size(); ++t)
     for (size_t k = 0; k < 3; ++k)
-      owner[{triangles[t][k], triangles[t][(k + 1) % 3]}] = first + static_cast<int>(t);
+      if (!owner
+               .try_emplace({triangles[t][k], triangles[t][(k + 1) % 3]},
+                            first + static_cast<int>(t))
+               .second)
+        throw std::invalid_argument(
+            "shell triangles: an edge met twice in one direction (a non-manifold mesh or "
+            "triangles of opposite orientation)");
   for (const auto& t : triangles) {
     std::array<int, 12> ids{};
     for (size_t a = 0; a < 12; ++a) ids[a] = t[a < 3 ? a : (a < 6 ? a - 3 : (a - 6) / 2)];

@@ -43,7 +43,7 @@ struct ShellReference {
       Eigen::Matrix<double, 2, 3>::Zero();  // of its corners' hat functions (1/m)
   std::array<Vec2, 3> conormal{};           // edge k's outward unit conormal
   // The edges' slopes s to II in the edge coordinates (II11, II12, II22): column k is
-  // (l_k / A) (a^2, a b, b^2), (a, b) the conormal's components along the two edges from corner 0.
+  // (l_k / A) (a^2, a b, b^2), (a, b) the conormal's dot products with the two edges from corner 0.
   Eigen::Matrix3d curvature = Eigen::Matrix3d::Zero();
   // The fitted quadratic's derivative along edge k's conormal at its midpoint, a combination of
   // the triangle's six points (corners, then far corners).
@@ -58,7 +58,8 @@ struct ShellTriangles {
 
   // x0, x1, x2 (counter-clockwise on the natural sheet); in slot 3 + k the far corner across the
   // edge opposite corner k; in slots 6 + 2k and 7 + 2k that neighbour's own far corners across its
-  // other two edges (its fit's points). An absent point's slot holds the triangle's corner k.
+  // other two edges (its fit's points). An absent point's slot holds a corner as a placeholder,
+  // never read (its edge is free, or that neighbour's fit does not count).
   std::vector<std::array<int, 12>> v;
   std::vector<std::array<int, 3>> neighbour;  // the triangle across each edge, -1 on the rim
   std::vector<ShellReference> reference;
