@@ -175,7 +175,8 @@ PlanarMesh extract(const Cdt& cdt, const std::vector<Vec2>& outline) {
     const Vec2 centroid((a.x() + b.x() + c.x()) / 3.0, (a.y() + b.y() + c.y()) / 3.0);
     // Both tests: CGAL's own marking drops the slivers left between a curved outline's chord and
     // the two halves it was split into (the split point, an inexact construction, lies a hair
-    // inside the chord), whose centroids the polygon test counts as inside.
+    // inside the chord), whose centroids the polygon test counts as inside; the polygon test
+    // drops what a feature reaching past the outline encloses, which CGAL counts as inside.
     if (!f->is_in_domain() || !inside(outline, centroid)) continue;
     std::array<int, 3> t;
     for (int k = 0; k < 3; ++k) {

@@ -121,10 +121,18 @@ std::array<bool, 3> ShellTriangles::free_edges(int i) const {
   return {e[0] == Edge::free, e[1] == Edge::free, e[2] == Edge::free};
 }
 
+namespace {
+
+// A fit counts where it is posed and all three edges are shared.
+bool counts(const ShellReference& r, const std::array<ShellTriangles::Edge, 3>& e) {
+  using Edge = ShellTriangles::Edge;
+  return r.quality > 0.0 && e[0] == Edge::shared && e[1] == Edge::shared && e[2] == Edge::shared;
+}
+
+}  // namespace
+
 bool ShellTriangles::fit_counts(int i) const {
-  if (reference[static_cast<size_t>(i)].quality == 0.0) return false;
-  const std::array<Edge, 3> e = edges(i);
-  return e[0] == Edge::shared && e[1] == Edge::shared && e[2] == Edge::shared;
+  return counts(reference[static_cast<size_t>(i)], edges(i));
 }
 
 int ShellTriangles::slot_of(int i, int id) const {
@@ -170,7 +178,7 @@ ShellTriangles::Plan ShellTriangles::plan(int i) const {
     for (int c = 0; c < 3; ++c)
       out.form(r, c) =
           plate_form(layers, unit[static_cast<size_t>(r)], unit[static_cast<size_t>(c)]);
-  const bool own = fit_counts(i);
+  const bool own = counts(ref, out.edges);
   for (int k = 0; k < 3; ++k) {
     const auto kk = static_cast<size_t>(k);
     if (out.edges[kk] == Edge::free) continue;
@@ -224,6 +232,14 @@ PlateLayer plate_at(const Eigen::Matrix2d& metric, double d, double nu) {
   return {metric.inverse(), 0.5 * std::sqrt(det), d, nu};
 }
 
+// A stencil of corners c with every other slot holding its corner as a placeholder (slot 3 + k
+// and, until link_neighbours, 6 + 2k and 7 + 2k hold corner k).
+std::array<int, 12> corner_stencil(const std::array<int, 3>& c) {
+  std::array<int, 12> ids{};
+  for (size_t a = 0; a < 12; ++a) ids[a] = c[a < 3 ? a : (a < 6 ? a - 3 : (a - 6) / 2)];
+  return ids;
+}
+
 Eigen::Matrix2d metric_of(const Points& x, const std::array<int, 12>& p) {
   return triangle_metric(x.col(p[0]), x.col(p[1]), x.col(p[2]));
 }
@@ -247,8 +263,7 @@ void ShellTriangles::add_mesh(const std::vector<std::array<int, 3>>& triangles,
             "shell triangles: an edge met twice in one direction (a non-manifold mesh or "
             "triangles of opposite orientation)");
   for (const auto& t : triangles) {
-    std::array<int, 12> ids{};
-    for (size_t a = 0; a < 12; ++a) ids[a] = t[a < 3 ? a : (a < 6 ? a - 3 : (a - 6) / 2)];
+    std::array<int, 12> ids = corner_stencil(t);
     std::array<int, 3> across{-1, -1, -1};
     std::array<bool, 3> has{};
     std::array<Vec2, 3> corner, far;
@@ -418,12 +433,9 @@ void ShellTriangles::add_forces(const Points& x, const Points*, int begin, int e
     f.col(p[0]) += g.segment<3>(0) + g.segment<3>(3);
     f.col(p[1]) -= g.segment<3>(0);
     f.col(p[2]) -= g.segment<3>(3);
-    for (size_t a = 0; a < 12; ++a) {
-      const auto aa = static_cast<Eigen::Index>(a);
-      f.col(p[a]) -= (pl.coef(0, aa) * st.de_ds[0] + pl.coef(1, aa) * st.de_ds[1] +
-                      pl.coef(2, aa) * st.de_ds[2]) *
-                     st.t;
-    }
+    // dE/dx_a through the agreed gradients: (sum_k coef(k, a) dE/ds_k) t.
+    const Eigen::Matrix<double, 12, 1> along = pl.coef.transpose() * st.de_ds;
+    for (size_t a = 0; a < 12; ++a) f.col(p[a]) -= along[static_cast<Eigen::Index>(a)] * st.t;
   }
 }
 
@@ -494,8 +506,7 @@ void ShellTriangles::carry(const ShellTriangles& old, const Rebuild& r) {
     std::array<int, 3> corners{old.v[k][0], old.v[k][1], old.v[k][2]}, mapped;
     if (!r.map(corners, mapped)) continue;
     renumber[k] = size();
-    std::array<int, 12> ids{};
-    for (size_t a = 0; a < 12; ++a) ids[a] = mapped[a < 3 ? a : (a < 6 ? a - 3 : (a - 6) / 2)];
+    std::array<int, 12> ids = corner_stencil(mapped);
     for (size_t c = 0; c < 3; ++c) {
       const int far = r.new_of_old[static_cast<size_t>(old.v[k][3 + c])];
       if (old.neighbour[k][c] >= 0 && far >= 0) ids[3 + c] = far;
