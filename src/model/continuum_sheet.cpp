@@ -124,6 +124,19 @@ SheetMeshing mesh_sheet(const ContinuumSpec& s) {
   return out;
 }
 
+void lump_masses(Sheet& sheet) {
+  Model& m = sheet.model;
+  const double per_area = sheet.material.thickness * sheet.material.density / 3.0;
+  m.mass.assign(static_cast<size_t>(m.reference.cols()), 0.0);
+  for (const Triangle& t : sheet.triangles) {
+    const Vec3 &a = m.reference.col(t[0]), &b = m.reference.col(t[1]), &c = m.reference.col(t[2]);
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    for (int k : t) m.mass[static_cast<size_t>(k)] += area * per_area;
+  }
+  m.inv_mass.resize(m.mass.size());
+  for (size_t p = 0; p < m.mass.size(); ++p) m.inv_mass[p] = 1.0 / m.mass[p];
+}
+
 Sheet build_continuum_sheet(const ContinuumSpec& s) {
   const Material& mat = s.material;
   if (!(mat.youngs_modulus > 0.0) || !(mat.thickness > 0.0) || !(mat.density > 0.0))
@@ -141,7 +154,6 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
   const int n = static_cast<int>(pm.vertices.size());
   m.reference = Points::Zero(3, n);
   for (int p = 0; p < n; ++p) m.reference.col(p).head<2>() = pm.vertices[static_cast<size_t>(p)];
-  m.mass.assign(static_cast<size_t>(n), 0.0);
   LawConstants law = law_constants(mat.law, mat.youngs_modulus);
   law.relaxed = mat.wrinkling == Wrinkling::relaxed;
   if (law.relaxed && !relaxable(mat.law))
@@ -151,13 +163,10 @@ Sheet build_continuum_sheet(const ContinuumSpec& s) {
   for (const auto& t : pm.triangles) {
     const Vec3 &a = m.reference.col(t[0]), &b = m.reference.col(t[1]), &c = m.reference.col(t[2]);
     m.membrane_triangles.add(t, a, b, c, law, mat.thickness);
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    for (int k : t) m.mass[static_cast<size_t>(k)] += area * mat.thickness * mat.density / 3.0;
     sheet.triangles.emplace_back(t[0], t[1], t[2]);
     edges += (b - a).norm() + (c - b).norm() + (a - c).norm();
   }
-  m.inv_mass.resize(m.mass.size());
-  for (size_t p = 0; p < m.mass.size(); ++p) m.inv_mass[p] = 1.0 / m.mass[p];
+  lump_masses(sheet);
   const double nu = relaxable(mat.law) ? 0.5 : 1.0 / 3.0, t = mat.thickness;
   const double d = mat.youngs_modulus * t * t * t / (12.0 * (1.0 - nu * nu));
   m.shell_triangles.add_mesh(pm.triangles, m.reference, d, nu);

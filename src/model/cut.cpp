@@ -1,5 +1,7 @@
 #include "membra/model/cut.hpp"
 
+#include "membra/model/continuum_hole.hpp"
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -84,7 +86,6 @@ namespace {
 Membrane rebuild_without(const Membrane& m, const std::vector<bool>& keep_node,
                          std::vector<int>& new_of_old) {
   const GridSheet& g = m.sheet.grid;
-  const Model& old = m.sheet.model;
   GridSpec spec{g.width(), g.height(), g.nx(), g.ny()};
   const double hx = g.hx(), hy = g.hy();
   const int nx = g.nx();
@@ -101,33 +102,19 @@ Membrane rebuild_without(const Membrane& m, const std::vector<bool>& keep_node,
   }
   Membrane n = make_membrane(std::move(rebuilt));
   const GridSheet& ng = n.sheet.grid;
-  Model& nm = n.sheet.model;
-  new_of_old.assign(static_cast<size_t>(old.num_particles()), -1);
-  for (int p = 0; p < nm.num_particles(); ++p) {
+  new_of_old.assign(static_cast<size_t>(m.sheet.model.num_particles()), -1);
+  for (int p = 0; p < n.sheet.model.num_particles(); ++p) {
     const auto [i, j] = ng.node(p);
-    const int op = g.particle(i, j);
-    new_of_old[op] = p;
-    n.state.x.col(p) = m.state.x.col(op);
-    n.state.v.col(p) = m.state.v.col(op);
-    if (old.pinned(op)) nm.pin(p);
+    new_of_old[static_cast<size_t>(g.particle(i, j))] = p;
   }
-  n.state.time = m.state.time;
-  nm.gravity = old.gravity;
-  nm.velocity_damping = old.velocity_damping;
-  for (int p : m.frame)
-    if (new_of_old[p] >= 0) n.frame.push_back(new_of_old[p]);
-  n.stretch = m.stretch;
-  n.resin_side = m.resin_side;
-  n.impregnated = m.impregnated;
-  n.coats = m.coats;
-  n.releasing = m.releasing;
-  n.release_level = m.release_level;
+  carry_process_state(m, new_of_old, n);
   return n;
 }
 
 }  // namespace
 
 int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
+  if (m.sheet.continuum()) return punch_continuum_hole(m, hole, where);
   const GridSheet& g = m.sheet.grid;
   const Model& old = m.sheet.model;
   std::vector<bool> keep_node(static_cast<size_t>(g.nx()) * g.ny(), false);

@@ -17,6 +17,31 @@ Membrane make_membrane(Sheet sheet) {
   return m;
 }
 
+void carry_process_state(const Membrane& from, const std::vector<int>& new_of_old, Membrane& to) {
+  const Model& old = from.sheet.model;
+  Model& nm = to.sheet.model;
+  for (int op = 0; op < old.num_particles(); ++op) {
+    const int p = new_of_old[static_cast<size_t>(op)];
+    if (p < 0) continue;
+    to.state.x.col(p) = from.state.x.col(op);
+    to.state.v.col(p) = from.state.v.col(op);
+    if (old.pinned(op)) nm.pin(p);
+  }
+  to.state.time = from.state.time;
+  nm.gravity = old.gravity;
+  nm.velocity_damping = old.velocity_damping;
+  to.frame.clear();
+  for (int p : from.frame)
+    if (new_of_old[static_cast<size_t>(p)] >= 0)
+      to.frame.push_back(new_of_old[static_cast<size_t>(p)]);
+  to.stretch = from.stretch;
+  to.resin_side = from.resin_side;
+  to.impregnated = from.impregnated;
+  to.coats = from.coats;
+  to.releasing = from.releasing;
+  to.release_level = from.release_level;
+}
+
 namespace {
 
 // The continuum sheet's frame: the rim particles whose outward normal points towards a held

@@ -1,6 +1,8 @@
 #include "membra/process/prepare.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "membra/core/input_error.hpp"
@@ -43,6 +45,27 @@ NodeMask outline_mask(const Scene& scene) {
   };
 }
 
+// A hole is cut into the continuum sheet's mesh from the start (continuum_spec), pulled back
+// from the frame to the natural sheet by the stretch: exact while the sheet is the frame's
+// stretch, so before the release and anything else that moves it. Slits are the lattice's yet.
+void check_continuum_cut(const Scene& scene, const ProtocolStep& cut_step, const CutStep& cut) {
+  if (!cut.line.empty())
+    throw InputError(cut_step.pointer + "/line",
+                     "the continuum model cuts holes, not slits, yet; set \"model\": \"lattice\"");
+  for (const ProtocolStep& step : scene.protocol) {
+    if (&step == &cut_step) return;
+    const auto kind = step.kind();
+    const auto* load = step.as<LoadStep>();
+    if (kind == ProtocolStep::Kind::release || kind == ProtocolStep::Kind::grow ||
+        (load && load->gravity && *load->gravity != 0.0))
+      throw InputError(cut_step.pointer + "/hole",
+                       std::string("on the continuum model a hole is cut before the sheet moves "
+                                   "off its frame; this one follows the ") +
+                           step_name(kind) + " at " + step.pointer +
+                           " (cut it earlier, or set \"model\": \"lattice\")");
+  }
+}
+
 // The steps the continuum sheet cannot take yet, refused before anything runs.
 void check_continuum_protocol(const Scene& scene) {
   for (const ProtocolStep& step : scene.protocol) {
@@ -53,11 +76,12 @@ void check_continuum_protocol(const Scene& scene) {
       throw InputError(step.pointer + "/family",
                        "a spring family is the lattice's; the continuum sheet grows as a whole "
                        "(leave \"family\" out, or set \"model\": \"lattice\")");
-    if (kind == ProtocolStep::Kind::add_springs || kind == ProtocolStep::Kind::cut ||
-        kind == ProtocolStep::Kind::curvature_map || (imp && imp->bilayer))
+    if (kind == ProtocolStep::Kind::add_springs || kind == ProtocolStep::Kind::curvature_map ||
+        (imp && imp->bilayer))
       throw InputError(step.pointer, std::string("the continuum model does not take ") +
                                          (imp ? "bilayer coats" : step_name(kind)) +
                                          " steps yet; set \"model\": \"lattice\"");
+    if (const auto* cut = step.as<CutStep>()) check_continuum_cut(scene, step, *cut);
   }
   if (scene.simulation.multilevel > 0)
     throw InputError("/simulation/multilevel",
@@ -88,6 +112,25 @@ Sheet continuum_sheet(const Scene& scene) {
   }
 }
 
+// A hole's outline on the natural sheet must keep clear of the sheet's outline: the mesh would
+// otherwise meet it at a sliver, and the frame would hold the hole's edge.
+void check_hole_inside(const ContinuumSpec& spec, const Polygon2& hole, const std::string& where) {
+  const double a = 0.5 * spec.width, b = 0.5 * spec.height, margin = spec.mesh.tolerance;
+  for (const Vec2& p : hole) {
+    const double u = p.x() - a, v = p.y() - b;
+    const bool inside = spec.disk ? (u / (a - margin)) * (u / (a - margin)) +
+                                            (v / (b - margin)) * (v / (b - margin)) <
+                                        1.0
+                                  : std::abs(u) < a - margin && std::abs(v) < b - margin;
+    if (inside) continue;
+    char at[64];
+    std::snprintf(at, sizeof at, "%.1f, %.1f mm", 1e3 * p.x(), 1e3 * p.y());
+    throw InputError(where, std::string("the hole reaches the sheet's outline (at ") + at +
+                                " on the natural sheet); on the continuum model a hole lies "
+                                "inside the sheet");
+  }
+}
+
 }  // namespace
 
 ContinuumSpec continuum_spec(const Scene& scene) {
@@ -102,10 +145,13 @@ ContinuumSpec continuum_spec(const Scene& scene) {
   for (const ProtocolStep& step : scene.protocol) {
     if (const auto* st = step.as<StretchStep>()) stretch = stretch.cwiseProduct(st->lambda);
     const auto* imp = step.as<ImpregnateStep>();
-    if (!imp) continue;
+    const auto* cut = step.as<CutStep>();
+    const bool hole = cut && cut->hole && scene.model == SheetModel::continuum;
+    if (!imp && !hole) continue;
     const Box2 frame{Vec2::Zero(), stretch.cwiseProduct(Vec2(spec.width, spec.height))};
-    for (Polygon2 poly : pattern_boundaries(*imp->pattern, frame, o)) {
+    for (Polygon2 poly : pattern_boundaries(imp ? *imp->pattern : *cut->hole, frame, o)) {
       for (Vec2& p : poly) p = p.cwiseQuotient(stretch);
+      if (hole) check_hole_inside(spec, poly, step.pointer + "/hole");
       spec.features.push_back(std::move(poly));
     }
   }

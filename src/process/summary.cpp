@@ -6,8 +6,10 @@
 
 #include "membra/measure/global_curvature.hpp"
 #include "membra/measure/hole_edge.hpp"
+#include "membra/measure/mesh_hole_edge.hpp"
 #include "membra/measure/quadric_fit.hpp"
 #include "membra/measure/reading_pose.hpp"
+#include "membra/measure/stress.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/forces.hpp"
 
@@ -51,18 +53,24 @@ void summarize_curvature_map(RunResult& r, const std::function<double(const Vec2
 
 // Peak within 1.5 spacings (the particles on the new edge) against the median far away; for
 // holes also the edge value read off the grid's staircase (hole_edge.hpp).
+// On the continuum sheet the particles' stress is vertex_stress (the triangles' largest principal
+// stress averaged), "near" is within two of the mesh's mean edges, and the hole's edge is
+// extrapolated from the triangles (mesh_hole_edge.hpp).
 void summarize_features(RunResult& r) {
   const Membrane& mem = r.prepared.membrane;
   const Model& m = mem.sheet.model;
   const GridSheet& g = mem.sheet.grid;
+  const bool mesh = mem.sheet.continuum();
   const auto principal =
-      max_principal_stress(node_stress(g, m, mem.state.x, mem.sheet.material.thickness));
-  const double near = 1.5 * std::max(g.hx(), g.hy());
+      mesh ? vertex_stress(m, mem.state.x, mem.sheet.material.thickness)
+           : max_principal_stress(node_stress(g, m, mem.state.x, mem.sheet.material.thickness));
+  const double near = mesh ? 2.0 * mem.sheet.mesh.mean_edge : 1.5 * std::max(g.hx(), g.hy());
   const double far = 0.25 * std::min(g.width(), g.height());
   for (const StressFeature& f : r.features) {
     StressConcentration c = stress_concentration(m, principal, f, near, far);
     if (f.kind == "hole") {
-      const HoleEdge e = hole_edge(g, principal, f.where);
+      const HoleEdge e =
+          mesh ? mesh_hole_edge(mem.sheet, mem.state.x, f.where) : hole_edge(g, principal, f.where);
       c.has_edge = e.valid;
       c.edge_stress = e.value;
       c.edge_angle = e.angle;

@@ -3,7 +3,9 @@
 // cannot take is refused before anything runs, naming the field.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "membra/core/input_error.hpp"
 #include "membra/io/scene.hpp"
@@ -54,6 +56,46 @@ TEST(ContinuumSteps, ASpringFamilyGrowthIsRefusedByName) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/protocol/0/family"), std::string::npos) << e.what();
   }
+}
+
+// exp7 with its slit replaced by a second hole (each 30 mm across, cut in the frame stretched
+// 1.5 x along x): each hole's outline is an edge path of the mesh, so the hole left is the ellipse
+// it pulls back to on the natural sheet (10 x 15 mm semi-axes) to the chords' tolerance, and the
+// stress concentrates above and below it.
+TEST(ContinuumSteps, AHoleCutOnTheFrameIsExactOnTheMesh) {
+  const Scene scene = load_scene(kExampleDir + "exp7_cut.json",
+                                 {"model=continuum",
+                                  "protocol.1={\"step\": \"cut\", \"hole\": {\"circle\": "
+                                  "{\"center\": [150, 100], \"radius\": 15}}}"});
+  const RunResult r = run_scene(scene);
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  const Sheet& sheet = r.prepared.membrane.sheet;
+  EXPECT_EQ(sheet.mesh.vertices, sheet.model.num_particles());
+  ASSERT_EQ(r.concentrations.size(), 2u);  // the two cut steps, both holes now
+  const StressConcentration& c = r.concentrations[1];
+  ASSERT_TRUE(c.has_edge);
+  EXPECT_NEAR(c.hole_radius, std::sqrt(0.010 * 0.015), 2e-5);
+  EXPECT_NEAR(std::abs(std::sin(c.edge_angle)), 1.0, 0.02);
+  EXPECT_GT(c.edge_concentration, 2.0);
+}
+
+// Slits, holes after the sheet moves, and holes reaching the outline: refused before anything
+// runs, naming the field.
+TEST(ContinuumSteps, CutsTheMeshCannotTakeAreRefusedByName) {
+  const auto refused = [](std::vector<std::string> sets, const std::string& field) {
+    sets.insert(sets.begin(), "model=continuum");
+    try {
+      (void)run_scene(load_scene(kExampleDir + "exp7_cut.json", sets));
+      ADD_FAILURE() << "no error for " << field;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  refused({}, "/protocol/1/line");
+  refused({"protocol.1={\"step\": \"release\"}"}, "/protocol/2/hole");
+  refused({"protocol.1={\"step\": \"cut\", \"hole\": {\"circle\": {\"center\": [5, 100], "
+           "\"radius\": 15}}}"},
+          "/protocol/1/hole");
 }
 
 }  // namespace

@@ -36,6 +36,10 @@ SheetMeshing mesh_sheet(const ContinuumSpec& spec);
 // latex's plate stiffness (nu 1/2 for the incompressible laws), no pins, no gravity.
 Sheet build_continuum_sheet(const ContinuumSpec& spec);
 
+// The masses lumped a third of each of the sheet's triangles (at rest on the natural sheet) to its
+// corners, every particle free.
+void lump_masses(Sheet& sheet);
+
 // "10633 vertices, 20880 triangles, smallest angle 25.1 deg, edges 0.41-10 mm": the mesh in a line.
 std::string mesh_line(const SheetMesh& mesh);
 

@@ -33,6 +33,12 @@ struct Membrane {
 // Wraps a freshly built sheet (at rest, nothing pinned by the frame).
 Membrane make_membrane(Sheet sheet);
 
+// What the process did to `from`, carried over to `to`, a sheet rebuilt without some of its
+// particles (new_of_old: the new particle of each old one, -1 if removed): positions,
+// velocities and time, pins, gravity and damping, the frame, the stretch, the resin and the
+// release. The element sets carry their own state (set_context.hpp, Rebuild).
+void carry_process_state(const Membrane& from, const std::vector<int>& new_of_old, Membrane& to);
+
 // Which edges of the sheet the frame holds.
 struct FrameEdges {
   bool left = true, right = true, bottom = true, top = true;

@@ -176,6 +176,7 @@ int Hinges::impregnate(const Impregnation& at) {
 }
 
 void Hinges::carry(const Hinges& old, const Rebuild& r) {
+  if (old.size() == 0) return;  // nothing to carry (and a continuum sheet has no grid to read)
   const GridSheet& ng = r.new_sheet.grid;
   auto node_id = [&](int p) {
     const auto [i, j] = ng.node(p);

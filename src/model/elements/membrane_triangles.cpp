@@ -167,29 +167,53 @@ void MembraneTriangles::add_stiffness_estimate(const Points& x, std::vector<doub
   }
 }
 
-ElementStress MembraneTriangles::stress(int i, const Points& x, double) const {
-  const auto& p = v[static_cast<size_t>(i)];
+namespace {
+
+// Triangle i's symmetric membrane force tensor (N/m) and an orthonormal basis of its plane;
+// false for a triangle collapsed to a line.
+bool force_tensor(const MembraneTriangles& t, int i, const Points& x, Eigen::Matrix3d& n_sym,
+                  Eigen::Matrix<double, 3, 2>& plane) {
+  const auto& p = t.v[static_cast<size_t>(i)];
   const auto g =
-      triangle_gradient<double>(latex[static_cast<size_t>(i)], resin[static_cast<size_t>(i)],
+      triangle_gradient<double>(t.latex[static_cast<size_t>(i)], t.resin[static_cast<size_t>(i)],
                                 x.col(p[0]), x.col(p[1]), x.col(p[2]));
   const Eigen::Matrix<double, 3, 2> ds = edges<double>(x.col(p[0]), x.col(p[1]), x.col(p[2]));
   const double area = 0.5 * ds.col(0).cross(ds.col(1)).norm();
-  if (!(area > 0.0)) return {};
+  if (!(area > 0.0)) return false;
   Eigen::Matrix<double, 3, 2> h;
   h << g[1], g[2];
   // Virtual work dE = H : dDs = a n : L for an in-plane velocity gradient L (dDs = L Ds): the
   // membrane force tensor n = H Ds^T / a (N/m), read in the triangle's plane (so that
   // compression reads negative, not as the normal's zero).
   const Eigen::Matrix3d n = h * ds.transpose() / area;
-  Eigen::Matrix<double, 3, 2> plane;
   plane.col(0) = ds.col(0).normalized();
   plane.col(1) = (ds.col(1) - ds.col(1).dot(plane.col(0)) * plane.col(0)).normalized();
-  const Eigen::Matrix2d n2 = plane.transpose() * (0.5 * (n + n.transpose())) * plane;
+  n_sym = 0.5 * (n + n.transpose());
+  return true;
+}
+
+}  // namespace
+
+Eigen::Matrix3d MembraneTriangles::stress_tensor(int i, const Points& x) const {
+  Eigen::Matrix3d n;
+  Eigen::Matrix<double, 3, 2> plane;
+  if (!force_tensor(*this, i, x, n, plane)) return Eigen::Matrix3d::Zero();
+  const Eigen::Matrix2d n2 = plane.transpose() * n * plane;
+  return plane * n2 * plane.transpose() / thickness[static_cast<size_t>(i)];
+}
+
+ElementStress MembraneTriangles::stress(int i, const Points& x, double) const {
+  Eigen::Matrix3d n;
+  Eigen::Matrix<double, 3, 2> plane;
+  if (!force_tensor(*this, i, x, n, plane)) return {};
+  const Eigen::Matrix2d n2 = plane.transpose() * n * plane;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(n2, Eigen::EigenvaluesOnly);
   ElementStress e;
   e.carries = true;
   e.stress = eig.eigenvalues().maxCoeff() / thickness[static_cast<size_t>(i)];
   // The latex's largest principal stretch: the square root of G^-1 g's largest eigenvalue.
+  const auto& p = v[static_cast<size_t>(i)];
+  const Eigen::Matrix<double, 3, 2> ds = edges<double>(x.col(p[0]), x.col(p[1]), x.col(p[2]));
   const Eigen::Matrix2d c = latex[static_cast<size_t>(i)].metric_inverse * (ds.transpose() * ds);
   const double mean = 0.5 * c.trace(), det = c.determinant();
   e.strained = true;

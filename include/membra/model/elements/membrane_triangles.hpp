@@ -78,6 +78,10 @@ struct MembraneTriangles {
   // The membrane force tensor's largest eigenvalue over the natural thickness (Pa, tension > 0),
   // both layers together: comparable with the springs' force / (width x thickness).
   ElementStress stress(int i, const Points& x, double thickness) const;
+  // The membrane force tensor over the natural thickness (Pa, 3 x 3 symmetric, in the triangle's
+  // plane): the triangle's (constant) stress for measures that need its directions. Zero for a
+  // triangle collapsed to a line.
+  Eigen::Matrix3d stress_tensor(int i, const Points& x) const;
 
   // Composite rule: the latex's rest metric moves from the frame's (level 1) to the natural one
   // (level 0) along the release; the resin keeps its own.

@@ -1,0 +1,122 @@
+#include "membra/model/continuum_hole.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+#include "membra/model/continuum_sheet.hpp"
+
+namespace membra {
+namespace continuum_hole {
+namespace {
+
+using Edge = std::pair<int, int>;
+
+Edge edge_key(int a, int b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// Which triangles stay: those whose centroid lies outside the hole on the frame, at its paper
+// position times the frame's stretch. That is where the mesh put the hole's outline, whatever
+// an earlier hole has since moved.
+std::vector<bool> triangles_kept(const Membrane& m, const Pattern& hole) {
+  const Points& x = m.sheet.model.reference;
+  std::vector<bool> keep;
+  for (const Triangle& t : m.sheet.triangles) {
+    const Vec3 centroid = (x.col(t[0]) + x.col(t[1]) + x.col(t[2])) / 3.0;
+    keep.push_back(!hole.contains(centroid.head<2>().cwiseProduct(m.stretch)));
+  }
+  return keep;
+}
+
+// The sheet's particles, triangles and element sets without what the hole removed.
+Sheet sheet_without(const Sheet& old, const std::vector<bool>& keep_tri,
+                    std::vector<int>& new_of_old) {
+  // An edge with no kept triangle on either side is "cut": every set's cut rule then drops the
+  // elements on the removed triangles (and none on a kept one, whose edges all border it).
+  std::map<Edge, int> kept_sides;
+  for (size_t k = 0; k < old.triangles.size(); ++k) {
+    const Triangle& t = old.triangles[k];
+    for (int e = 0; e < 3; ++e) kept_sides[edge_key(t[e], t[(e + 1) % 3])] += keep_tri[k] ? 1 : 0;
+  }
+  const CrossesCut crosses = [&](int p, int q) {
+    const auto it = kept_sides.find(edge_key(p, q));
+    return it == kept_sides.end() || it->second == 0;
+  };
+  Model filtered = old.model;
+  filtered.for_each_set([&](auto& set) { set.filter(survivors_of_cut(set, crosses)); });
+  new_of_old.assign(static_cast<size_t>(old.model.num_particles()), -1);
+  Sheet n;  // everything but the particles, triangles and elements as before
+  n.grid = old.grid;
+  n.material = old.material;
+  n.stiffness = old.stiffness;
+  n.options = old.options;
+  n.mesh = old.mesh;
+  int next = 0;
+  for (size_t k = 0; k < old.triangles.size(); ++k) {
+    if (!keep_tri[k]) continue;
+    Triangle t = old.triangles[k];
+    for (int c = 0; c < 3; ++c) {
+      int& id = new_of_old[static_cast<size_t>(t[c])];
+      if (id < 0) id = next++;
+      t[c] = id;
+    }
+    n.triangles.push_back(t);
+  }
+  Model& nm = n.model;
+  nm.reference = Points::Zero(3, next);
+  for (size_t p = 0; p < new_of_old.size(); ++p)
+    if (new_of_old[p] >= 0)
+      nm.reference.col(new_of_old[p]) = old.model.reference.col(static_cast<int>(p));
+  const Rebuild rebuild{old, n, new_of_old};
+  nm.for_each_set_with(filtered, [&](auto& set, const auto& from) { set.carry(from, rebuild); });
+  lump_masses(n);
+  return n;
+}
+
+// The mesh's record after the hole: its counts now (report.json's "mesh" counts what runs), and
+// the rim the frame holds renumbered.
+void update_mesh_record(const Sheet& sheet, const std::vector<int>& new_of_old, SheetMesh& mesh) {
+  mesh.vertices = sheet.model.num_particles();
+  mesh.triangles = static_cast<int>(sheet.triangles.size());
+  std::vector<int> rim;
+  std::vector<Vec2> normal;
+  for (size_t k = 0; k < mesh.rim.size(); ++k) {
+    const int p = new_of_old[static_cast<size_t>(mesh.rim[k])];
+    if (p < 0) continue;
+    rim.push_back(p);
+    normal.push_back(mesh.rim_normal[k]);
+  }
+  mesh.rim = std::move(rim);
+  mesh.rim_normal = std::move(normal);
+}
+
+}  // namespace
+}  // namespace continuum_hole
+
+using continuum_hole::sheet_without;
+using continuum_hole::triangles_kept;
+using continuum_hole::update_mesh_record;
+
+int punch_continuum_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
+  const std::vector<bool> keep_tri = triangles_kept(m, hole);
+  if (std::none_of(keep_tri.begin(), keep_tri.end(), [](bool k) { return k; }))
+    throw std::invalid_argument("the hole removes the whole sheet");
+  if (std::all_of(keep_tri.begin(), keep_tri.end(), [](bool k) { return k; })) return 0;
+  std::vector<int> new_of_old;
+  Membrane n = make_membrane(sheet_without(m.sheet, keep_tri, new_of_old));
+  update_mesh_record(n.sheet, new_of_old, n.sheet.mesh);
+  carry_process_state(m, new_of_old, n);
+  update_elements(n);
+  int removed = 0;
+  for (size_t p = 0; p < new_of_old.size(); ++p) {
+    if (new_of_old[p] >= 0) continue;
+    ++removed;
+    if (where) where->push_back(m.sheet.model.reference.col(static_cast<int>(p)).head<2>());
+  }
+  m = std::move(n);
+  return removed;
+}
+
+}  // namespace membra
