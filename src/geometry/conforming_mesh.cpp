@@ -105,9 +105,34 @@ int snap_to_outline(const std::vector<Vec2>& outline, double eps, Vec2& p) {
   return -1;
 }
 
-void insert_chain(Cdt& cdt, const std::vector<Vec2>& points, bool closed) {
+// The vertices inserted so far by position, so that two constraints' points closer than eps
+// become one vertex: two points a hair apart (a slit ending on a hole's edge, each drawn
+// inexactly) would leave a sliver whose refinement never ends.
+class VertexSnap {
+ public:
+  explicit VertexSnap(double eps) : eps_(eps) {}
+  Cdt::Vertex_handle insert(Cdt& cdt, const Vec2& p) {
+    const long i = std::lround(p.x() / eps_), j = std::lround(p.y() / eps_);
+    for (long di = -1; di <= 1; ++di)
+      for (long dj = -1; dj <= 1; ++dj) {
+        const auto cell = cells_.find({i + di, j + dj});
+        if (cell == cells_.end()) continue;
+        for (const auto& [q, h] : cell->second)
+          if ((q - p).norm() <= eps_) return h;
+      }
+    const Cdt::Vertex_handle h = cdt.insert(Point(p.x(), p.y()));
+    cells_[{i, j}].push_back({p, h});
+    return h;
+  }
+
+ private:
+  double eps_;
+  std::map<std::pair<long, long>, std::vector<std::pair<Vec2, Cdt::Vertex_handle>>> cells_;
+};
+
+void insert_chain(Cdt& cdt, VertexSnap& snap, const std::vector<Vec2>& points, bool closed) {
   std::vector<Cdt::Vertex_handle> handles;
-  for (const Vec2& p : points) handles.push_back(cdt.insert(Point(p.x(), p.y())));
+  for (const Vec2& p : points) handles.push_back(snap.insert(cdt, p));
   const size_t edges = closed ? handles.size() : handles.size() - 1;
   for (size_t i = 0; i < edges; ++i) {
     const auto a = handles[i], b = handles[(i + 1) % handles.size()];
@@ -119,11 +144,32 @@ void insert_chain(Cdt& cdt, const std::vector<Vec2>& points, bool closed) {
 // (within eps) and its edges along the outline left out, so that no two constraints overlap; the
 // outline then split at those vertices and to size between them, so no short edge is left
 // where a feature meets the sheet's edge.
+// The closed constraints with every open constraint's end that lies on one of their edges (within
+// eps) made a vertex of it, so that the two share that point exactly (VertexSnap).
+std::vector<std::vector<Vec2>> with_ends_on_edges(const MeshRequest& r, double eps) {
+  std::vector<std::vector<Vec2>> polys = r.constraints;
+  for (const std::vector<Vec2>& line : r.open_constraints) {
+    if (line.size() < 2) continue;
+    for (const Vec2& end : {line.front(), line.back()})
+      for (std::vector<Vec2>& poly : polys)
+        for (size_t k = 0; k < poly.size(); ++k) {
+          const Vec2 a = poly[k], e = poly[(k + 1) % poly.size()] - a;
+          const double t = (end - a).dot(e) / e.squaredNorm();
+          if (t <= 0.0 || t >= 1.0 || (end - (a + t * e)).norm() > eps) continue;
+          if ((end - a).norm() > eps && (end - (a + e)).norm() > eps)
+            poly.insert(poly.begin() + static_cast<long>(k) + 1, end);
+          break;
+        }
+  }
+  return polys;
+}
+
 void insert_constraints(Cdt& cdt, const MeshRequest& r, double eps) {
   const std::vector<Vec2>& outline = r.outline;
+  VertexSnap snap(eps);
   std::vector<std::vector<std::pair<double, Vec2>>> on_edge(outline.size());
-  for (std::vector<Vec2> poly : r.constraints) {
-    if (poly.size() < 2) continue;
+  const auto insert = [&](std::vector<Vec2> poly, bool closed) {
+    if (poly.size() < 2) return;
     std::vector<int> on(poly.size());
     for (size_t k = 0; k < poly.size(); ++k) {
       on[k] = snap_to_outline(outline, eps, poly[k]);
@@ -131,15 +177,18 @@ void insert_constraints(Cdt& cdt, const MeshRequest& r, double eps) {
         on_edge[static_cast<size_t>(on[k])].push_back(
             {(poly[k] - outline[static_cast<size_t>(on[k])]).norm(), poly[k]});
     }
-    for (size_t i = 0; i < poly.size(); ++i) {
+    const size_t edges = closed ? poly.size() : poly.size() - 1;
+    for (size_t i = 0; i < edges; ++i) {
       const size_t j = (i + 1) % poly.size();
       if (on[i] >= 0 && on[i] == on[j]) continue;  // along the outline
       std::vector<Vec2> piece;
       split_edge(poly[i], poly[j], r.size, piece);
       piece.push_back(poly[j]);
-      insert_chain(cdt, piece, false);
+      insert_chain(cdt, snap, piece, false);
     }
-  }
+  };
+  for (const std::vector<Vec2>& poly : with_ends_on_edges(r, eps)) insert(poly, true);
+  for (const std::vector<Vec2>& line : r.open_constraints) insert(line, false);
   std::vector<Vec2> rim;
   for (size_t k = 0; k < outline.size(); ++k) {
     auto& stops = on_edge[k];
@@ -153,7 +202,7 @@ void insert_constraints(Cdt& cdt, const MeshRequest& r, double eps) {
     }
     split_edge(from, outline[(k + 1) % outline.size()], r.size, rim);
   }
-  insert_chain(cdt, rim, true);
+  insert_chain(cdt, snap, rim, true);
 }
 
 bool inside(const std::vector<Vec2>& poly, const Vec2& p) {

@@ -88,7 +88,8 @@ std::optional<MeshHole> find_mesh_hole(const Sheet& sheet, const std::vector<Vec
       centroid += (a + b) * cross / 6.0;
       length += (b - a).norm();
     }
-    if (!(std::abs(area) > 0.0)) continue;
+    // A slit's loop encloses nothing: its area is round-off, its centroid anywhere.
+    if (!(std::abs(area) > 1e-6 * length * length)) continue;
     centroid /= area;
     const double d = (centroid - mean).norm();
     if (d >= best_distance) continue;

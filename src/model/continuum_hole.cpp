@@ -1,21 +1,15 @@
 #include "membra/model/continuum_hole.hpp"
 
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 #include <utility>
 
 #include "membra/model/continuum_sheet.hpp"
+#include "membra/model/continuum_slit.hpp"
 
 namespace membra {
 namespace continuum_hole {
 namespace {
-
-using Edge = std::pair<int, int>;
-
-Edge edge_key(int a, int b) {
-  return {std::min(a, b), std::max(a, b)};
-}
 
 // Which triangles stay: those whose centroid lies outside the hole on the frame, at its paper
 // position times the frame's stretch. That is where the mesh put the hole's outline, whatever
@@ -30,22 +24,17 @@ std::vector<bool> triangles_kept(const Membrane& m, const Pattern& hole) {
   return keep;
 }
 
-// The sheet's particles, triangles and element sets without what the hole removed.
+// The sheet's particles, triangles and element sets without what the hole removed. The
+// continuum's triangle sets hold one element per triangle of the sheet, in its order.
 Sheet sheet_without(const Sheet& old, const std::vector<bool>& keep_tri,
                     std::vector<int>& new_of_old) {
-  // An edge with no kept triangle on either side is "cut": every set's cut rule then drops the
-  // elements on the removed triangles (and none on a kept one, whose edges all border it).
-  std::map<Edge, int> kept_sides;
-  for (size_t k = 0; k < old.triangles.size(); ++k) {
-    const Triangle& t = old.triangles[k];
-    for (int e = 0; e < 3; ++e) kept_sides[edge_key(t[e], t[(e + 1) % 3])] += keep_tri[k] ? 1 : 0;
-  }
-  const CrossesCut crosses = [&](int p, int q) {
-    const auto it = kept_sides.find(edge_key(p, q));
-    return it == kept_sides.end() || it->second == 0;
-  };
   Model filtered = old.model;
-  filtered.for_each_set([&](auto& set) { set.filter(survivors_of_cut(set, crosses)); });
+  filtered.for_each_set([&](auto& set) {
+    if (set.size() == 0) return;
+    if (set.size() != static_cast<int>(keep_tri.size()))
+      throw std::logic_error("continuum hole: an element set that is not one per triangle");
+    set.filter(keep_tri);
+  });
   new_of_old.assign(static_cast<size_t>(old.model.num_particles()), -1);
   Sheet n;  // everything but the particles, triangles and elements as before
   n.grid = old.grid;
@@ -105,7 +94,12 @@ int punch_continuum_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* wh
     throw std::invalid_argument("the hole removes the whole sheet");
   if (std::all_of(keep_tri.begin(), keep_tri.end(), [](bool k) { return k; })) return 0;
   std::vector<int> new_of_old;
-  Membrane n = make_membrane(sheet_without(m.sheet, keep_tri, new_of_old));
+  Sheet rest = sheet_without(m.sheet, keep_tri, new_of_old);
+  if (rest.model.num_particles() == m.sheet.model.num_particles())
+    throw std::invalid_argument(
+        "the hole is smaller than the mesh's elements there: it would take triangles but no "
+        "particle (enlarge it, or raise sheet.mesh.elements_across)");
+  Membrane n = make_membrane(std::move(rest));
   update_mesh_record(n.sheet, new_of_old, n.sheet.mesh);
   carry_process_state(m, new_of_old, n);
   update_elements(n);
@@ -116,6 +110,7 @@ int punch_continuum_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* wh
     if (where) where->push_back(m.sheet.model.reference.col(static_cast<int>(p)).head<2>());
   }
   m = std::move(n);
+  separate_pinched_particles(m);  // where the hole's edge reached an earlier slit's tip
   return removed;
 }
 

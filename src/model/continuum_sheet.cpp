@@ -1,7 +1,9 @@
 #include "membra/model/continuum_sheet.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -90,6 +92,23 @@ namespace {
                               "or lower elements_across");
 }
 
+// The size the slits ask for at p: each slit's length / (2 elements_across) along it, growing
+// at the grading rate away from it (infinity without slits).
+double slit_size(const ContinuumSpec& s, const MeshSpec& m, const Vec2& p) {
+  double h = std::numeric_limits<double>::infinity();
+  for (const Polyline2& line : s.slits) {
+    double length = 0.0, distance = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k + 1 < line.size(); ++k) {
+      const Vec2 a = line[k], e = line[k + 1] - a;
+      length += e.norm();
+      const double t = std::clamp((p - a).dot(e) / std::max(e.squaredNorm(), 1e-300), 0.0, 1.0);
+      distance = std::min(distance, (p - (a + t * e)).norm());
+    }
+    h = std::min(h, length / (2.0 * m.elements_across) + m.grading * distance);
+  }
+  return h;
+}
+
 }  // namespace
 
 SheetMeshing mesh_sheet(const ContinuumSpec& s) {
@@ -117,7 +136,8 @@ SheetMeshing mesh_sheet(const ContinuumSpec& s) {
   MeshRequest request;
   request.outline = outline;
   request.constraints = s.features;
-  request.size = [&size](const Vec2& p) { return size(p); };
+  request.open_constraints = s.slits;
+  request.size = [&size, &s, &m](const Vec2& p) { return std::min(size(p), slit_size(s, m, p)); };
   request.min_angle_deg = m.min_angle_deg;
   request.max_vertices = static_cast<long>(kMaxTriangles / 2);  // about two triangles a vertex
   out.mesh = conforming_mesh(request);

@@ -1,6 +1,7 @@
 #include "membra/model/cut.hpp"
 
 #include "membra/model/continuum_hole.hpp"
+#include "membra/model/continuum_slit.hpp"
 
 #include <algorithm>
 #include <array>
@@ -49,6 +50,7 @@ TriKey tri_key(const GridSheet& g, const Triangle& t) {
 }  // namespace
 
 int cut_along(Membrane& m, const std::vector<Vec2>& line, std::vector<Vec2>* where) {
+  if (m.sheet.continuum()) return cut_continuum_slit(m, line, where);
   if (line.size() < 2) throw std::invalid_argument("a cut needs at least two points");
   const Points& x = m.state.x;
   const CrossesCut crosses = [&](int p, int q) {

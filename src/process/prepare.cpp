@@ -45,21 +45,19 @@ NodeMask outline_mask(const Scene& scene) {
   };
 }
 
-// A hole is cut into the continuum sheet's mesh from the start (continuum_spec), pulled back
-// from the frame to the natural sheet by the stretch: exact while the sheet is the frame's
-// stretch, so before the release and anything else that moves it. Slits are the lattice's yet.
+// Holes and slits are cut into the continuum sheet's mesh from the start (continuum_spec),
+// pulled back from the frame to the natural sheet by the stretch: exact while the sheet is the
+// frame's stretch, so before the release and anything else that moves it.
 void check_continuum_cut(const Scene& scene, const ProtocolStep& cut_step, const CutStep& cut) {
-  if (!cut.line.empty())
-    throw InputError(cut_step.pointer + "/line",
-                     "the continuum model cuts holes, not slits, yet; set \"model\": \"lattice\"");
+  const std::string field = cut_step.pointer + (cut.hole ? "/hole" : "/line");
   for (const ProtocolStep& step : scene.protocol) {
     if (&step == &cut_step) return;
     const auto kind = step.kind();
     const auto* load = step.as<LoadStep>();
     if (kind == ProtocolStep::Kind::release || kind == ProtocolStep::Kind::grow ||
         (load && load->gravity && *load->gravity != 0.0))
-      throw InputError(cut_step.pointer + "/hole",
-                       std::string("on the continuum model a hole is cut before the sheet moves "
+      throw InputError(field,
+                       std::string("on the continuum model a cut is made before the sheet moves "
                                    "off its frame; this one follows the ") +
                            step_name(kind) + " at " + step.pointer +
                            " (cut it earlier, or set \"model\": \"lattice\")");
@@ -131,6 +129,41 @@ void check_hole_inside(const ContinuumSpec& spec, const Polygon2& hole, const st
   }
 }
 
+// p moved onto the nearest edge of the closed polygon when within `reach` of it.
+Vec2 snapped_to(const Polygon2& poly, double reach, Vec2 p) {
+  double best = reach;
+  Vec2 out = p;
+  for (size_t k = 0; k < poly.size(); ++k) {
+    const Vec2 a = poly[k], e = poly[(k + 1) % poly.size()] - a;
+    const double t = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    const double d = (p - (a + t * e)).norm();
+    if (d < best) best = d, out = a + t * e;
+  }
+  return out;
+}
+
+// A slit on the natural sheet: its line pulled back by the stretch, every point inside the
+// sheet or on its outline (where the slit opens the rim; a point within the chord tolerance of
+// the meshed outline is moved onto it, so the mesher joins them).
+void add_slit(const CutStep& cut, const Vec2& stretch, const std::string& pointer,
+              ContinuumSpec& spec) {
+  const double a = 0.5 * spec.width, b = 0.5 * spec.height, slack = spec.mesh.tolerance;
+  const Polygon2 outline = sheet_outline(spec.width, spec.height, spec.disk, slack);
+  Polyline2 line;
+  for (const Vec2& q : cut.line) {
+    const Vec2 p = snapped_to(outline, 2.0 * slack, q.cwiseQuotient(stretch));
+    const double u = p.x() - a, v = p.y() - b;
+    const bool inside = spec.disk ? (u / a) * (u / a) + (v / b) * (v / b) <= 1.0 + slack / a
+                                  : std::abs(u) <= a + slack && std::abs(v) <= b + slack;
+    if (!inside)
+      throw InputError(pointer + "/line",
+                       "the cut leaves the sheet; on the continuum model a slit lies inside the "
+                       "sheet or ends on its outline");
+    line.push_back(p);
+  }
+  spec.slits.push_back(std::move(line));
+}
+
 }  // namespace
 
 ContinuumSpec continuum_spec(const Scene& scene) {
@@ -146,7 +179,9 @@ ContinuumSpec continuum_spec(const Scene& scene) {
     if (const auto* st = step.as<StretchStep>()) stretch = stretch.cwiseProduct(st->lambda);
     const auto* imp = step.as<ImpregnateStep>();
     const auto* cut = step.as<CutStep>();
-    const bool hole = cut && cut->hole && scene.model == SheetModel::continuum;
+    const bool continuum = scene.model == SheetModel::continuum;
+    if (cut && continuum && !cut->line.empty()) add_slit(*cut, stretch, step.pointer, spec);
+    const bool hole = cut && cut->hole && continuum;
     if (!imp && !hole) continue;
     const Box2 frame{Vec2::Zero(), stretch.cwiseProduct(Vec2(spec.width, spec.height))};
     for (Polygon2 poly : pattern_boundaries(imp ? *imp->pattern : *cut->hole, frame, o)) {

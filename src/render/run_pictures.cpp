@@ -54,6 +54,9 @@ void paint_frames(const RunResult& r, const RunStaging& s, const Camera& camera,
   Renderer tiles(tw, th);
   Image sheet = blank_image(cols * tw, rows * th);
   for (size_t i = 0; i < r.frames.size(); ++i) {
+    // A frame from before a continuum slit added particles has too few for the final mesh; its
+    // tile stays blank. (Frames from before a hole are drawn on the final mesh, as they were.)
+    if (r.frames[i].x.cols() < r.prepared.membrane.state.x.cols()) continue;
     const std::vector<Rgb>& colors = s.frames[i].rgb;
     char name[64];
     std::snprintf(name, sizeof name, "frames/frame_%03zu.png", i + 1);

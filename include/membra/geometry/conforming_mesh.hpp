@@ -25,6 +25,9 @@ struct MeshRequest {
   // Closed polygons inside it whose edges the mesh must follow (resin boundaries); they may
   // touch or run along the outline.
   std::vector<std::vector<Vec2>> constraints;
+  // Open polylines inside it whose edges the mesh must follow too (slits); their ends may lie on
+  // the outline.
+  std::vector<std::vector<Vec2>> open_constraints;
   std::function<double(const Vec2&)> size;  // the largest edge wanted at a point, m
   double min_angle_deg = 25.0;              // refinement target; <= 30 terminates in practice
   long max_vertices = 2'000'000;            // refinement stops with an error beyond it

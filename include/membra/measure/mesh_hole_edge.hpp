@@ -1,8 +1,8 @@
 #pragma once
-// The stress on the edge of a hole in the continuum sheet (docs/deformation.md, "Holes on the
-// continuum model"). The mesh follows the hole's outline, so the edge is the hole's own, not a
-// staircase; but a triangle's stress is its mean, read about a third of its height off the edge,
-// where a round hole's hoop stress falls steeply (Kirsch: from 3 s by 7 s / R per unit
+// The stress on the edge of a hole in the continuum sheet (docs/deformation.md, "Holes and
+// slits on the continuum model"). The mesh follows the hole's outline, so the edge is the hole's
+// own, not a staircase; but a triangle's stress is its mean, read about a third of its height off
+// the edge, where a round hole's hoop stress falls steeply (Kirsch: from 3 s by 7 s / R per unit
 // distance). So the edge value is extrapolated, as on the lattice (hole_edge.hpp): along the
 // ray from the hole's centre at each angle, the triangles in a narrow wedge out to 2.5 times the
 // edge's distance give a least-squares fit of the hoop stress in the terms of Kirsch's field
@@ -27,8 +27,9 @@ struct MeshHole {
 };
 
 // The hole whose removed particles lay at paper positions `removed`: the loop of the mesh's
-// boundary edges, other than the sheet's outline (sheet.mesh.rim), whose centroid lies nearest
-// their mean. Nothing when the sheet has no such loop.
+// boundary edges that encloses an area, touches no particle of the sheet's outline
+// (sheet.mesh.rim) and whose centroid lies nearest their mean. Nothing when the sheet has no
+// such loop (a hole a slit joins to the outline has none: its edge is not read).
 std::optional<MeshHole> find_mesh_hole(const Sheet& sheet, const std::vector<Vec2>& removed);
 
 // The hoop stress (Pa) at the hole's edge on the ray at `angle` (rad from +x, paper), from the

@@ -9,8 +9,9 @@
 
 namespace membra {
 
-// Where a cut or hole was, in paper coordinates (m): the midpoints of the springs a cut removed,
-// or the positions of the particles a hole removed.
+// Where a cut or hole was, in paper coordinates (m): the midpoints of the springs a cut removed
+// (on the continuum: of the mesh edges it opened), or the positions of the particles a hole
+// removed.
 struct StressFeature {
   std::string name;  // the scene step, e.g. "/protocol/2"
   std::string kind;  // "cut" or "hole"

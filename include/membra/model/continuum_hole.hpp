@@ -1,10 +1,10 @@
 #pragma once
-// A hole in the continuum sheet (docs/deformation.md, "Holes on the continuum model"): the
-// triangles whose centroid lies inside it go, with the particles no triangle keeps; the edges left
-// along it are free. The scene cuts holes while the sheet is on its frame, and the mesh was made
-// with the hole's outline, pulled back by the frame's stretch, as an edge path
-// (process/prepare.cpp), so the hole is exact; a hole the mesh does not follow has the triangles'
-// edges.
+// A hole in the continuum sheet (docs/deformation.md, "Holes and slits on the continuum
+// model"): the triangles whose centroid lies inside it go, with the particles no triangle keeps;
+// the edges left along it are free. The scene cuts holes while the sheet is on its frame, and
+// the mesh was made with the hole's outline, pulled back by the frame's stretch, as an edge path
+// (process/prepare.cpp), so the hole is exact; a hole the mesh does not follow has the
+// triangles' edges.
 #include <vector>
 
 #include "membra/model/membrane.hpp"

@@ -17,6 +17,10 @@ struct ContinuumSpec {
   // Boundaries the mesh must follow, on the natural sheet (m): resin outlines pulled back from
   // the frame they were drawn on.
   std::vector<Polygon2> features;
+  // Open polylines the mesh must follow too: slits a cut will open (continuum_slit.hpp). The
+  // elements along one are at most its length / (2 elements_across), growing away at the
+  // grading rate.
+  std::vector<Polyline2> slits;
   MeshSpec mesh;
   Material material = latex();
 };

@@ -305,6 +305,28 @@ void ShellTriangles::link_neighbours() {
     }
 }
 
+void ShellTriangles::split_corners(const std::vector<std::array<int, 3>>& corners) {
+  for (size_t t = 0; t < v.size(); ++t)
+    for (size_t k = 0; k < 3; ++k) v[t][k] = corners[t][k];
+  const auto holds = [&](int o, int id) {
+    const auto& c = v[static_cast<size_t>(o)];
+    return c[0] == id || c[1] == id || c[2] == id;
+  };
+  for (size_t t = 0; t < v.size(); ++t)
+    for (size_t k = 0; k < 3; ++k) {
+      int& o = neighbour[t][k];
+      const int a = v[t][(k + 1) % 3], b = v[t][(k + 2) % 3];
+      if (o >= 0 && !(holds(o, a) && holds(o, b))) o = -1;
+      v[t][3 + k] = v[t][k];  // the far corner, or the placeholder of a free edge
+      if (o < 0) continue;
+      for (size_t j = 0; j < 3; ++j) {
+        const int c = v[static_cast<size_t>(o)][j];
+        if (c != a && c != b) v[t][3 + k] = c;
+      }
+    }
+  link_neighbours();
+}
+
 void ShellTriangles::filter(const std::vector<bool>& keep) {
   // The survivors' new indices: a neighbour removed leaves a free edge.
   std::vector<int> renumber(keep.size(), -1);

@@ -97,6 +97,10 @@ struct ShellTriangles {
                             v[static_cast<size_t>(i)][2]);
   }
   void carry(const ShellTriangles& old, const Rebuild& r);
+  // A slit's rule (continuum_slit.hpp): every triangle's corners as given (the same triangles,
+  // particles along the slit now one per side); a neighbour that no longer shares an edge's two
+  // corners leaves that edge free.
+  void split_corners(const std::vector<std::array<int, 3>>& corners);
   // Growth rule: the latex's metric grows as the membrane's (triangle_growth); its plate follows.
   std::vector<LocalGrowth> growth(const GrowthField& field, const Points& paper) const {
     return triangles_growth(v, field, paper);
@@ -128,7 +132,7 @@ struct ShellTriangles {
   Plan plan(int i) const;
 
  private:
-  // Slots 6..11 from each neighbour's far corners (after the mesh, a filter or a carry).
+  // Slots 6..11 from each neighbour's far corners (after the mesh, a filter, a carry or a split).
   void link_neighbours();
   // The slot of triangle i's stencil that holds particle id, or -1.
   int slot_of(int i, int id) const;
