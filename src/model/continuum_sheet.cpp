@@ -10,6 +10,7 @@
 #include <string>
 
 #include "membra/core/units.hpp"
+#include "membra/model/segment_distance.hpp"
 
 namespace membra {
 namespace {
@@ -97,14 +98,9 @@ namespace {
 double slit_size(const ContinuumSpec& s, const MeshSpec& m, const Vec2& p) {
   double h = std::numeric_limits<double>::infinity();
   for (const Polyline2& line : s.slits) {
-    double length = 0.0, distance = std::numeric_limits<double>::infinity();
-    for (size_t k = 0; k + 1 < line.size(); ++k) {
-      const Vec2 a = line[k], e = line[k + 1] - a;
-      length += e.norm();
-      const double t = std::clamp((p - a).dot(e) / std::max(e.squaredNorm(), 1e-300), 0.0, 1.0);
-      distance = std::min(distance, (p - (a + t * e)).norm());
-    }
-    h = std::min(h, length / (2.0 * m.elements_across) + m.grading * distance);
+    double length = 0.0;
+    for (size_t k = 0; k + 1 < line.size(); ++k) length += (line[k + 1] - line[k]).norm();
+    h = std::min(h, length / (2.0 * m.elements_across) + m.grading * polyline_distance(p, line));
   }
   return h;
 }

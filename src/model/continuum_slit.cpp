@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "membra/model/continuum_sheet.hpp"
+#include "membra/model/segment_distance.hpp"
 
 namespace membra {
 namespace continuum_slit {
@@ -21,22 +22,12 @@ Edge edge_key(int a, int b) {
   return {std::min(a, b), std::max(a, b)};
 }
 
-double distance_to(const Vec2& p, const std::vector<Vec2>& line) {
-  double d = std::numeric_limits<double>::infinity();
-  for (size_t k = 0; k + 1 < line.size(); ++k) {
-    const Vec2 a = line[k], e = line[k + 1] - a;
-    const double t = std::clamp((p - a).dot(e) / std::max(e.squaredNorm(), 1e-300), 0.0, 1.0);
-    d = std::min(d, (p - (a + t * e)).norm());
-  }
-  return d;
-}
-
 // The mesh's inner edges on the line, on the frame: both ends and the midpoint within kOnLine
 // (an edge along the outline or a hole's edge has nothing to open).
 std::set<Edge> slit_edges(const Membrane& m, const std::vector<Vec2>& line) {
   const Points& ref = m.sheet.model.reference;
   const auto on = [&](const Vec2& paper) {
-    return distance_to(paper.cwiseProduct(m.stretch), line) < kOnLine;
+    return polyline_distance(paper.cwiseProduct(m.stretch), line) < kOnLine;
   };
   std::map<Edge, int> sides;
   for (const Triangle& t : m.sheet.triangles)

@@ -22,8 +22,15 @@ std::string ViewerSession::paint(const Vec2& centre, double radius, bool erase) 
   return "";
 }
 
+// The continuum sheet's mesh is made with the scene's cuts as edges (docs/deformation.md, "Holes
+// and slits on the continuum model"): one drawn now would not follow it.
+constexpr const char* kContinuumCuts =
+    "on the continuum model holes and slits are cut in the scene's protocol, before the release, "
+    "so that the mesh follows them";
+
 std::string ViewerSession::cut(const Vec2& a, const Vec2& b) {
   if (!a.allFinite() || !b.allFinite() || (a - b).norm() == 0.0) return "the cut needs two points";
+  if (prepared_.membrane.sheet.continuum()) return kContinuumCuts;
   push_undo();
   const int n = cut_along(prepared_.membrane, {a, b});
   if (n == 0) {
@@ -39,6 +46,7 @@ std::string ViewerSession::cut(const Vec2& a, const Vec2& b) {
 
 std::string ViewerSession::hole(const Vec2& centre, double radius) {
   if (!(radius > 0.0) || !centre.allFinite()) return "the hole needs a positive radius";
+  if (prepared_.membrane.sheet.continuum()) return kContinuumCuts;
   push_undo();
   CutStep step;
   step.hole_spec = circle_spec(centre, radius);

@@ -158,6 +158,19 @@ TEST(ViewerSession, ASavedSceneKeepsItsRampWhenTShrinks) {
   EXPECT_GE(static_cast<double>(saved.simulation.steps) * saved.simulation.dt, 0.5 - 1e-12);
 }
 
+// On the continuum model cuts belong in the scene (the mesh is made with them): the viewer's
+// cut and hole tools say so and leave the sheet as it was.
+TEST(ViewerSession, TheContinuumsCutsAreTheScenes) {
+  Scene scene = small_scene();
+  scene.model = SheetModel::continuum;
+  ViewerSession s(scene);
+  ASSERT_EQ(s.stretch(), "");
+  const int particles = s.membrane().sheet.model.num_particles();
+  EXPECT_NE(s.cut(mm(75, 20), mm(75, 80)).find("protocol"), std::string::npos);
+  EXPECT_NE(s.hole(mm(110, 50), 12 * units::mm).find("protocol"), std::string::npos);
+  EXPECT_EQ(s.membrane().sheet.model.num_particles(), particles);
+}
+
 TEST(ViewerSession, CutsHolesAndPinsChangeTheSheetAndUndo) {
   ViewerSession s(small_scene());
   ASSERT_EQ(s.stretch(), "");
