@@ -10,6 +10,7 @@
 #include "membra/model/continuum_sheet.hpp"
 #include "membra/model/pattern_boundary.hpp"
 #include "membra/model/pins.hpp"
+#include "membra/model/segment_distance.hpp"
 #include "membra/process/memory_estimate.hpp"
 
 namespace membra {
@@ -134,10 +135,9 @@ Vec2 snapped_to(const Polygon2& poly, double reach, Vec2 p) {
   double best = reach;
   Vec2 out = p;
   for (size_t k = 0; k < poly.size(); ++k) {
-    const Vec2 a = poly[k], e = poly[(k + 1) % poly.size()] - a;
-    const double t = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-    const double d = (p - (a + t * e)).norm();
-    if (d < best) best = d, out = a + t * e;
+    const Vec2 q = nearest_on_segment(p, poly[k], poly[(k + 1) % poly.size()]);
+    const double d = (p - q).norm();
+    if (d < best) best = d, out = q;
   }
   return out;
 }
@@ -175,11 +175,11 @@ ContinuumSpec continuum_spec(const Scene& scene) {
   Vec2 stretch(1.0, 1.0);
   BoundaryOptions o;
   o.tolerance = scene.mesh.tolerance;
+  const bool continuum = scene.model == SheetModel::continuum;
   for (const ProtocolStep& step : scene.protocol) {
     if (const auto* st = step.as<StretchStep>()) stretch = stretch.cwiseProduct(st->lambda);
     const auto* imp = step.as<ImpregnateStep>();
     const auto* cut = step.as<CutStep>();
-    const bool continuum = scene.model == SheetModel::continuum;
     if (cut && continuum && !cut->line.empty()) add_slit(*cut, stretch, step.pointer, spec);
     const bool hole = cut && cut->hole && continuum;
     if (!imp && !hole) continue;

@@ -10,11 +10,16 @@
 
 namespace membra {
 
-inline double segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
+// The point of segment a-b nearest p (a for a segment of zero length).
+inline Vec2 nearest_on_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double len2 = ab.squaredNorm();
   const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).squaredNorm();
+  return a + t * ab;
+}
+
+inline double segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
+  return (nearest_on_segment(p, a, b) - p).squaredNorm();
 }
 
 // Distance from p to the open polyline `line` (infinity for fewer than two points).
