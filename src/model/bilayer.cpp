@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <Eigen/Eigenvalues>
+
 namespace membra {
 double bilayer_curvature_per_strain(const Material& base, const Material& layer) {
   if (!(base.thickness > 0.0) || !(layer.thickness > 0.0) || !(base.youngs_modulus > 0.0) ||
@@ -12,6 +14,13 @@ double bilayer_curvature_per_strain(const Material& base, const Material& layer)
   const double t = 6.0 * (1.0 + m) * (1.0 + m) /
                    (3.0 * (1.0 + m) * (1.0 + m) + (1.0 + m * n) * (m * m + 1.0 / (m * n)));
   return t / (base.thickness + layer.thickness);
+}
+
+Eigen::Matrix2d misfit_strain(const Eigen::Matrix2d& f) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(f * f.transpose());
+  const Eigen::Vector2d inv_stretch = eig.eigenvalues().cwiseMax(1e-12).cwiseSqrt().cwiseInverse();
+  return Eigen::Matrix2d::Identity() -
+         eig.eigenvectors() * inv_stretch.asDiagonal() * eig.eigenvectors().transpose();
 }
 
 }  // namespace membra

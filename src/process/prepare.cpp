@@ -69,16 +69,14 @@ void check_continuum_cut(const Scene& scene, const ProtocolStep& cut_step, const
 void check_continuum_protocol(const Scene& scene) {
   for (const ProtocolStep& step : scene.protocol) {
     const auto kind = step.kind();
-    const auto* imp = step.as<ImpregnateStep>();
     const auto* grow = step.as<GrowStep>();
     if (grow && grow->grow.family)
       throw InputError(step.pointer + "/family",
                        "a spring family is the lattice's; the continuum sheet grows as a whole "
                        "(leave \"family\" out, or set \"model\": \"lattice\")");
-    if (kind == ProtocolStep::Kind::add_springs || kind == ProtocolStep::Kind::curvature_map ||
-        (imp && imp->bilayer))
+    if (kind == ProtocolStep::Kind::add_springs || kind == ProtocolStep::Kind::curvature_map)
       throw InputError(step.pointer, std::string("the continuum model does not take ") +
-                                         (imp ? "bilayer coats" : step_name(kind)) +
+                                         step_name(kind) +
                                          " steps yet; set \"model\": \"lattice\"");
     if (const auto* cut = step.as<CutStep>()) check_continuum_cut(scene, step, *cut);
   }

@@ -280,6 +280,43 @@ TEST(ShellTriangles, GradientAndHessianMatchFiniteDifferences) {
     for (int k = 0; k < 36; ++k) x(k % 3, k / 3) += 0.002 * u(rng);
     if (trial == 3) x(2, 3) += 0.012;  // a neighbour folded far over
     expect_kernel_matches_finite_differences(s, x, "shell triangle");
+    // A coat's rest curvature on every triangle, part way through the release (the free
+    // edges' slopes then gain an offset).
+    for (auto& c : s.coat_curvature) c = 2e-3 * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    s.coat_share = 0.7;
+    expect_kernel_matches_finite_differences(s, x, "coated shell triangle");
+  }
+}
+
+// A coat's rest curvature II0 = E^T k0 E (E the triangle's edges): the patch bent to that
+// curvature stores almost nothing, rim triangles (free edges) included, against the plate
+// energy (D/2) k0 : k0 A it stores flat; bent the other way it stores four times its flat energy.
+TEST(ShellTriangles, APatchBentToItsCoatsCurvatureStoresNothing) {
+  const double r = 0.4;
+  for (double angle : {0.0, 0.5}) {
+    const TriPatch m = tri_patch(16, 0.002, angle);
+    ShellTriangles s;
+    s.add_mesh(m.triangles, m.x, kD, 0.5);
+    const Eigen::Matrix2d k0 = Eigen::Vector2d(1.0 / r, 0.0).asDiagonal();  // bent about y
+    for (int i = 0; i < s.size(); ++i) {
+      const auto& p = s.ids(i);
+      Eigen::Matrix2d e;
+      e << (m.x.col(p[1]) - m.x.col(p[0])).head<2>(), (m.x.col(p[2]) - m.x.col(p[0])).head<2>();
+      const Eigen::Matrix2d ii = e.transpose() * k0 * e;
+      s.coat_curvature[static_cast<size_t>(i)] = Eigen::Vector3d(ii(0, 0), ii(0, 1), ii(1, 1));
+    }
+    s.coat_share = 1.0;
+    double area = 0.0;
+    for (const PlateLayer& l : s.latex) area += l.area;
+    // Flat, the rim triangles store less: their free edges' slopes relax towards II0.
+    const double flat = set_energy(s, m.x), plate = 0.5 * kD / (r * r) * area;
+    EXPECT_GT(flat / plate, 0.85) << angle;
+    EXPECT_LE(flat / plate, 1.0 + 1e-9) << angle;
+    const Bent b = bend(m.x, r);
+    EXPECT_LT(set_energy(s, b.cylinder) / plate, 1e-3) << angle;
+    Points other = b.cylinder;
+    other.row(2) *= -1.0;
+    EXPECT_NEAR(set_energy(s, other) / flat, 4.0, 0.01) << angle;
   }
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // Resin on one face: the bilayer's spontaneous curvature and the hinges that carry it
 // (elements/hinges.hpp; docs/process.md "Bilayer").
+#include <Eigen/Core>
+
 #include "membra/model/material.hpp"
 
 namespace membra {
@@ -12,5 +14,10 @@ namespace membra {
 // longer one. For a plate with equal Poisson ratios the same factor maps the misfit strain
 // tensor to the curvature tensor.
 double bilayer_curvature_per_strain(const Material& base, const Material& layer);
+
+// eps = I - V^-1 with V = sqrt(F F^T), F the in-plane deformation gradient from the natural
+// sheet to the state the coat sets in: the strain by which the latex, bonded to resin at rest in
+// that state, would shorten along each direction if it were free.
+Eigen::Matrix2d misfit_strain(const Eigen::Matrix2d& f);
 
 }  // namespace membra

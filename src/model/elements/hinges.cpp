@@ -4,8 +4,6 @@
 #include <map>
 #include <set>
 
-#include <Eigen/Eigenvalues>
-
 #include "membra/model/bilayer.hpp"
 #include "membra/model/elements/hinge_kernel.hpp"
 #include "membra/model/pattern.hpp"
@@ -28,15 +26,6 @@ Mat2 deformation(const Points& reference, const Points& x, int a, int b, int c) 
   q.col(0) = (x.col(b) - x.col(a)).head<2>();
   q.col(1) = (x.col(c) - x.col(a)).head<2>();
   return q * r.inverse();
-}
-
-// eps = I - V^-1 with V = sqrt(F F^T): the strain by which the latex, bonded to resin at rest
-// in the current state, would shorten along each direction if it were free.
-Mat2 misfit_strain(const Mat2& f) {
-  const Eigen::SelfAdjointEigenSolver<Mat2> eig(f * f.transpose());
-  const Eigen::Vector2d inv_stretch = eig.eigenvalues().cwiseMax(1e-12).cwiseSqrt().cwiseInverse();
-  return Mat2::Identity() -
-         eig.eigenvectors() * inv_stretch.asDiagonal() * eig.eigenvectors().transpose();
 }
 
 // Each directed edge of a (counter-clockwise) triangle, with the vertex to its left.
@@ -117,7 +106,8 @@ bool Hinges::severed(int i, const CrossesCut& crosses) const {
 }
 
 int Hinges::impregnate(const Impregnation& at) {
-  if (!at.bilayer) return 0;
+  // A continuum sheet's shell triangles carry a coat's curvature themselves.
+  if (!at.bilayer || at.sheet.continuum()) return 0;
   const Sheet& sheet = at.sheet;
   const Points& x = at.x;
   const double per_strain = bilayer_curvature_per_strain(sheet.material, at.resin);

@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include "membra/core/second_order.hpp"
+#include "membra/model/bilayer.hpp"
 #include "membra/model/elements/membrane_triangles.hpp"
 #include "membra/model/material.hpp"
 #include "membra/model/pattern.hpp"
@@ -211,14 +212,22 @@ ShellTriangles::Plan ShellTriangles::plan(int i) const {
   }
   // Free slopes s_f = -(B_ff)^-1 B_fk s_k, B = C^T Q C, in fixed 3 x 3 blocks (this runs in every
   // kernel call): with the masks P_f and P_k, (P_f B P_f + P_k) is B_ff padded with the identity.
+  // With a rest curvature r the free slopes minimize (C s - r)^T Q (C s - r) and gain
+  // (B_ff)^-1 P_f C^T Q r.
+  const Eigen::Vector3d rest = coat_share * coat_curvature[k0];
   Eigen::Matrix3d keep = Eigen::Matrix3d::Identity();
+  out.shift = -rest;
   if (out.edges[0] == Edge::free || out.edges[1] == Edge::free || out.edges[2] == Edge::free) {
     Eigen::Matrix3d pf = Eigen::Matrix3d::Zero();
     for (int k = 0; k < 3; ++k) pf(k, k) = out.edges[static_cast<size_t>(k)] == Edge::free;
     const Eigen::Matrix3d pk = Eigen::Matrix3d::Identity() - pf;
     const Eigen::Matrix3d b = ref.curvature.transpose() * out.form * ref.curvature;
     const Eigen::Matrix3d padded = pf * b * pf + pk;
-    keep = pk - padded.completeOrthogonalDecomposition().solve(Eigen::Matrix3d(pf * b * pk));
+    const auto solver = padded.completeOrthogonalDecomposition();
+    keep = pk - solver.solve(Eigen::Matrix3d(pf * b * pk));
+    if (!rest.isZero(0.0))
+      out.shift += ref.curvature *
+                   solver.solve(Eigen::Vector3d(pf * ref.curvature.transpose() * out.form * rest));
   }
   out.map = ref.curvature * keep;
   return out;
@@ -242,6 +251,13 @@ std::array<int, 12> corner_stencil(const std::array<int, 3>& c) {
 
 Eigen::Matrix2d metric_of(const Points& x, const std::array<int, 12>& p) {
   return triangle_metric(x.col(p[0]), x.col(p[1]), x.col(p[2]));
+}
+
+// The triangle's two edges from its first corner, in the plane of the frame (m).
+Eigen::Matrix2d in_plane_edges(const Points& x, const std::array<int, 12>& p) {
+  Eigen::Matrix2d e;
+  e << (x.col(p[1]) - x.col(p[0])).head<2>(), (x.col(p[2]) - x.col(p[0])).head<2>();
+  return e;
 }
 
 }  // namespace
@@ -288,6 +304,7 @@ void ShellTriangles::add_mesh(const std::vector<std::array<int, 3>>& triangles,
     neighbour.push_back(across);
     natural_metric.push_back(g);
     frame_metric.push_back(g);
+    coat_curvature.push_back(Eigen::Vector3d::Zero());
   }
   link_neighbours();
 }
@@ -346,6 +363,7 @@ void ShellTriangles::filter(const std::vector<bool>& keep) {
   keep_where(resin, keep);
   keep_where(natural_metric, keep);
   keep_where(frame_metric, keep);
+  keep_where(coat_curvature, keep);
   link_neighbours();
 }
 
@@ -356,8 +374,8 @@ double ShellTriangles::plate(int i) const {
 namespace {
 
 // A triangle's state for its kernel: the unit normal t = c / |c| (c = d1 x d2, d1 = x1 - x0,
-// d2 = x2 - x0), the agreed gradients w_k (columns), the slopes s_k = t . w_k, II = map s and the
-// energy's derivative in the slopes.
+// d2 = x2 - x0), the agreed gradients w_k (columns), the slopes s_k = t . w_k, ii = II - II0 =
+// map s + shift and the energy's derivative in the slopes.
 struct ShellState {
   Vec3 d1, d2, t;
   double c_norm = 0.0;  // 0: a face collapsed to a line, which has no normal and reads nothing
@@ -376,7 +394,7 @@ ShellState state_of(const ShellTriangles::Plan& pl, const std::array<int, 12>& p
     st.w += x.col(p[a]) * pl.coef.col(static_cast<Eigen::Index>(a)).transpose();
   st.t = st.c_norm > 0.0 ? Vec3(c / st.c_norm) : Vec3::Zero();
   st.s = st.w.transpose() * st.t;
-  st.ii = pl.map * st.s;
+  st.ii = pl.map * st.s + pl.shift;
   st.de_ds = 2.0 * pl.map.transpose() * (pl.form * st.ii);
   return st;
 }
@@ -417,7 +435,8 @@ Eigen::Matrix<double, 15, 15> reduced_hessian(const ShellTriangles::Plan& pl,
   Jet e(0.0);
   std::array<Jet, 3> ii;
   for (int r = 0; r < 3; ++r)
-    ii[static_cast<size_t>(r)] = s[0] * pl.map(r, 0) + s[1] * pl.map(r, 1) + s[2] * pl.map(r, 2);
+    ii[static_cast<size_t>(r)] =
+        s[0] * pl.map(r, 0) + s[1] * pl.map(r, 1) + s[2] * pl.map(r, 2) + Jet(pl.shift[r]);
   for (int r = 0; r < 3; ++r)
     for (int q = 0; q < 3; ++q)
       if (pl.form(r, q) != 0.0)
@@ -482,6 +501,7 @@ void ShellTriangles::add_stiffness_estimate(const Points& x, std::vector<double>
 }
 
 void ShellTriangles::update(const ReleaseLevel& release) {
+  coat_share = release.releasing ? 1.0 - release.level : 0.0;
   for (int i = 0; i < size(); ++i) {
     const auto k = static_cast<size_t>(i);
     const PlateLayer old = latex[k];
@@ -497,6 +517,9 @@ void ShellTriangles::begin_release(const Points& x) {
 
 int ShellTriangles::impregnate(const Impregnation& at) {
   const double d = bending_stiffness(at.resin);
+  const double per_strain =
+      at.bilayer ? bilayer_curvature_per_strain(at.sheet.material, at.resin) : 0.0;
+  const double sign = at.side >= 0 ? 1.0 : -1.0;
   int count = 0;
   for (int i = 0; i < size(); ++i) {
     const auto k = static_cast<size_t>(i);
@@ -504,6 +527,15 @@ int ShellTriangles::impregnate(const Impregnation& at) {
     if (!pattern_covers(at, p[0], p[1], p[2]))
       continue;  // a later coat replaces, as the membrane's
     resin[k] = plate_at(metric_of(at.x, p), d, 1.0 / 3.0);
+    coat_curvature[k].setZero();  // resin through the thickness curls nothing
+    if (at.bilayer) {
+      // The coat on the convex side: a bulge towards it, II < 0 seen from that face.
+      const Eigen::Matrix2d e = in_plane_edges(at.x, p);
+      const Eigen::Matrix2d f = e * in_plane_edges(at.sheet.model.reference, p).inverse();
+      const Eigen::Matrix2d k0 = -sign * per_strain * misfit_strain(f);
+      const Eigen::Matrix2d ii = e.transpose() * k0 * e;
+      coat_curvature[k] = Eigen::Vector3d(ii(0, 0), ii(0, 1), ii(1, 1));
+    }
     ++count;
   }
   return count;
@@ -540,7 +572,9 @@ void ShellTriangles::carry(const ShellTriangles& old, const Rebuild& r) {
     resin.push_back(old.resin[k]);
     natural_metric.push_back(old.natural_metric[k]);
     frame_metric.push_back(old.frame_metric[k]);
+    coat_curvature.push_back(old.coat_curvature[k]);
   }
+  coat_share = old.coat_share;
   for (size_t t = static_cast<size_t>(first); t < v.size(); ++t)
     for (size_t c = 0; c < 3; ++c) {
       int& o = neighbour[t][c];

@@ -17,6 +17,10 @@
 //    minimizes the triangle's energy;
 //  - clamped (a much stiffer neighbour, the latex against resin): the stiff plate's plane is the
 //    edge's slope, so the kink goes to the latex, as plates in series share it.
+// A coat on one face (a bilayer) gives a triangle a rest curvature, the second fundamental form
+// both its layers are at rest in: Timoshenko's curvature of the misfit between the coat and the
+// latex (bilayer.hpp), grown with the release as the lattice's hinge moments are; the energy is
+// then the plates' form of II - II0 (docs/model.md, "Bilayer coats").
 // The gradient is analytic and the Hessian exact, by dual numbers.
 #include <array>
 #include <string_view>
@@ -66,6 +70,10 @@ struct ShellTriangles {
   std::vector<PlateLayer> latex, resin;
   // Material state: the latex's metric on the natural sheet and when the release began.
   std::vector<Eigen::Matrix2d> natural_metric, frame_metric;
+  // A coat's rest curvature once released, II0 in the edge coordinates (II11, II12, II22; 1/m
+  // times the metric), and the share of it the release has reached (0 before the release).
+  std::vector<Eigen::Vector3d> coat_curvature;
+  double coat_share = 0.0;
 
   int size() const { return static_cast<int>(v.size()); }
   std::array<int, 12> ids(int i) const { return v[static_cast<size_t>(i)]; }
@@ -90,7 +98,9 @@ struct ShellTriangles {
   void update(const ReleaseLevel& release);
   void begin_release(const Points& x);
   // Resin rule: a triangle whose centroid lies inside the pattern takes the resin's plate (its
-  // material's D, nu 1/3) with the metric of its current shape (a later coat replaces it).
+  // material's D, nu 1/3) with the metric of its current shape (a later coat replaces it). A coat
+  // on one face (at.bilayer) also sets its rest curvature: -side T eps / h in the plane, eps the
+  // misfit strain I - V^-1 of the stretch V at impregnation, with the coat on the convex side.
   int impregnate(const Impregnation& at);
   bool severed(int i, const CrossesCut& crosses) const {
     return triangle_severed(crosses, v[static_cast<size_t>(i)][0], v[static_cast<size_t>(i)][1],
@@ -122,12 +132,15 @@ struct ShellTriangles {
 
   // How triangle i reads its curvature (shell_triangles.cpp): each edge's slope s_k = t . w_k,
   // t its unit normal and w_k = sum_a coef(k, a) x_a (the agreed gradient along the conormal);
-  // II = map s in edge coordinates, free edges' slopes eliminated; energy II^T form II.
+  // e = map s + shift is II - II0 in edge coordinates, free edges' slopes eliminated; energy
+  // e^T form e.
   struct Plan {
     std::array<Edge, 3> edges{};
     Eigen::Matrix<double, 3, 12> coef = Eigen::Matrix<double, 3, 12>::Zero();
     Eigen::Matrix3d map = Eigen::Matrix3d::Zero();
     Eigen::Matrix3d form = Eigen::Matrix3d::Zero();
+    // -II0 and what the free edges' slopes add towards it (zero without a coat).
+    Eigen::Vector3d shift = Eigen::Vector3d::Zero();
   };
   Plan plan(int i) const;
 
