@@ -269,6 +269,7 @@ AddSpringsStep read_add_springs(const JsonObject& o, const Progression& at) {
   s.add.region = make_pattern(s.region, at.frame());
   const std::string along = o.string("along", "stretch", {"stretch", "shear", "flex", "any"});
   s.add.along = along == "any" ? std::optional<SpringFamily>() : spring_family(along);
+  s.along_given = o.has("along") && along != "any";
   s.add.count = static_cast<int>(o.integer("count", 1, 1, 1000));
   s.add.stiffness = o.has("stiffness")
                         ? o.number("stiffness", std::nullopt, Bounds::positive()) * units::N_per_mm

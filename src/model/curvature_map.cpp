@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
+#include <utility>
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
@@ -21,59 +23,124 @@ std::vector<bool> edge_particles(const GridSheet& g) {
 
 namespace {
 
-// Newton's method for F(u) = L u + s K e^{2u} = 0 on the interior unknowns, from u. Returns true
-// when it converged (u updated), false otherwise (u untouched).
-bool newton(const GridSheet& g, const std::vector<bool>& edge, const std::vector<int>& unknown,
+// The Liouville equation weakly, F(u) = A u + s M K e^{2u} = 0 on the interior particles: A the
+// Laplacian's stiffness (its rows on the interior only) and M the area each particle stands for.
+// On the grid, the 5-point stencil times the cell's area; on a mesh, the cotangent weights and
+// a third of each triangle's area (the residual F is then in units of K times an area, as the
+// grid's is of K h^2).
+struct Liouville {
+  Eigen::SparseMatrix<double> a;
+  std::vector<double> mass;
+};
+
+Liouville grid_liouville(const GridSheet& g, const std::vector<bool>& edge) {
+  const int n = g.num_particles();
+  const double cell = g.hx() * g.hy(), wx = g.hy() / g.hx(), wy = g.hx() / g.hy();
+  std::vector<Eigen::Triplet<double>> t;
+  for (int p = 0; p < n; ++p) {
+    if (edge[static_cast<size_t>(p)]) continue;  // every interior particle has its 4 neighbours
+    const auto [i, j] = g.node(p);
+    t.emplace_back(p, p, -2.0 * (wx + wy));
+    t.emplace_back(p, g.particle(i - 1, j), wx);
+    t.emplace_back(p, g.particle(i + 1, j), wx);
+    t.emplace_back(p, g.particle(i, j - 1), wy);
+    t.emplace_back(p, g.particle(i, j + 1), wy);
+  }
+  Liouville l;
+  l.a.resize(n, n);
+  l.a.setFromTriplets(t.begin(), t.end());
+  l.mass.assign(static_cast<size_t>(n), cell);
+  return l;
+}
+
+Liouville mesh_liouville(const Sheet& s) {
+  const int n = s.model.num_particles();
+  const Points& r = s.model.reference;
+  std::vector<Eigen::Triplet<double>> t;
+  Liouville l;
+  l.mass.assign(static_cast<size_t>(n), 0.0);
+  for (const Triangle& tri : s.triangles) {
+    const std::array<int, 3> c{tri[0], tri[1], tri[2]};
+    const double area = 0.5 * (r.col(c[1]) - r.col(c[0])).cross(r.col(c[2]) - r.col(c[0])).norm();
+    for (size_t k = 0; k < 3; ++k) {
+      l.mass[static_cast<size_t>(c[k])] += area / 3.0;
+      // The edge opposite corner k weighs half the cotangent of the angle there.
+      const int a = c[(k + 1) % 3], b = c[(k + 2) % 3];
+      const Vec3 ea = r.col(a) - r.col(c[k]), eb = r.col(b) - r.col(c[k]);
+      const double w = 0.5 * ea.dot(eb) / ea.cross(eb).norm();
+      t.emplace_back(a, b, w);
+      t.emplace_back(b, a, w);
+      t.emplace_back(a, a, -w);
+      t.emplace_back(b, b, -w);
+    }
+  }
+  l.a.resize(n, n);
+  l.a.setFromTriplets(t.begin(), t.end());
+  return l;
+}
+
+// Newton's method for F(u) = 0 on the interior unknowns, from u. Returns true when it converged
+// (u updated), false otherwise (u untouched).
+bool newton(const Liouville& op, const std::vector<int>& unknown, int n,
             const std::vector<double>& K, double s, const ConformalOptions& o,
             std::vector<double>& u) {
-  const int n = static_cast<int>(std::count(edge.begin(), edge.end(), false));
-  const double ihx2 = 1.0 / (g.hx() * g.hx()), ihy2 = 1.0 / (g.hy() * g.hy());
-  const double scale = g.hx() * g.hy();  // residuals in units of K h^2
   std::vector<double> v = u;
+  const auto np = static_cast<Eigen::Index>(v.size());
   for (int it = 0; it < o.max_newton; ++it) {
+    const Eigen::VectorXd au = op.a * Eigen::Map<const Eigen::VectorXd>(v.data(), np);
     Eigen::VectorXd f(n);
     std::vector<Eigen::Triplet<double>> jac;
     double worst = 0.0;
-    for (int p = 0; p < g.num_particles(); ++p) {
-      const int r = unknown[p];
+    for (Eigen::Index p = 0; p < np; ++p) {
+      const int r = unknown[static_cast<size_t>(p)];
       if (r < 0) continue;
-      const auto [i, j] = g.node(p);
-      const double e2u = std::exp(2.0 * v[p]);
-      double lap = -2.0 * (ihx2 + ihy2) * v[p];
-      const int nb[4] = {g.particle(i - 1, j), g.particle(i + 1, j), g.particle(i, j - 1),
-                         g.particle(i, j + 1)};
-      for (int k = 0; k < 4; ++k) {
-        const double w = k < 2 ? ihx2 : ihy2;
-        lap += w * v[nb[k]];  // edge neighbours hold u = 0 (v stays 0 there)
-        if (unknown[nb[k]] >= 0) jac.emplace_back(r, unknown[nb[k]], w);
-      }
-      f[r] = lap + s * K[p] * e2u;
-      jac.emplace_back(r, r, -2.0 * (ihx2 + ihy2) + 2.0 * s * K[p] * e2u);
-      worst = std::max(worst, std::abs(f[r]) * scale);
+      const double sk = s * K[static_cast<size_t>(p)] * op.mass[static_cast<size_t>(p)] *
+                        std::exp(2.0 * v[static_cast<size_t>(p)]);
+      f[r] = au[p] + sk;
+      jac.emplace_back(r, r, 2.0 * sk);
+      worst = std::max(worst, std::abs(f[r]));
     }
     if (!std::isfinite(worst)) return false;
     if (worst <= o.tolerance) {
       u = v;
       return true;
     }
+    for (Eigen::Index c = 0; c < op.a.outerSize(); ++c)
+      for (Eigen::SparseMatrix<double>::InnerIterator e(op.a, c); e; ++e) {
+        const int row = unknown[static_cast<size_t>(e.row())],
+                  col = unknown[static_cast<size_t>(c)];
+        if (row >= 0 && col >= 0) jac.emplace_back(row, col, e.value());
+      }
     Eigen::SparseMatrix<double> J(n, n);
     J.setFromTriplets(jac.begin(), jac.end());
     Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(J);
     if (lu.info() != Eigen::Success) return false;
     const Eigen::VectorXd du = lu.solve(-f);
     if (lu.info() != Eigen::Success || !du.allFinite()) return false;
-    for (int p = 0; p < g.num_particles(); ++p)
-      if (unknown[p] >= 0) v[p] += du[unknown[p]];
+    for (Eigen::Index p = 0; p < np; ++p)
+      if (const int r = unknown[static_cast<size_t>(p)]; r >= 0) v[static_cast<size_t>(p)] += du[r];
   }
   return false;
 }
 
 }  // namespace
 
+std::vector<bool> edge_particles(const Sheet& sheet) {
+  if (!sheet.continuum()) return edge_particles(sheet.grid);
+  // An edge of one triangle only is on the outline, a hole's rim or a slit's lip.
+  std::map<std::pair<int, int>, int> count;
+  for (const Triangle& t : sheet.triangles)
+    for (int k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
+  std::vector<bool> edge(static_cast<size_t>(sheet.model.num_particles()), false);
+  for (const auto& [e, n] : count)
+    if (n == 1) edge[static_cast<size_t>(e.first)] = edge[static_cast<size_t>(e.second)] = true;
+  return edge;
+}
+
 ConformalFactor conformal_factor(const Sheet& sheet, const std::vector<double>& K,
                                  const ConformalOptions& o) {
-  const GridSheet& g = sheet.grid;
-  const std::vector<bool> edge = edge_particles(g);
+  const std::vector<bool> edge = edge_particles(sheet);
+  const Liouville op = sheet.continuum() ? mesh_liouville(sheet) : grid_liouville(sheet.grid, edge);
   std::vector<int> unknown(edge.size(), -1);
   int n = 0;
   for (size_t p = 0; p < edge.size(); ++p)
@@ -87,7 +154,7 @@ ConformalFactor conformal_factor(const Sheet& sheet, const std::vector<double>& 
   double s = 0.0, step = 1.0 / o.continuation_steps;
   while (s < 1.0) {
     const double next = std::min(1.0, s + step);
-    if (newton(g, edge, unknown, K, next, o, out.u)) {
+    if (newton(op, unknown, n, K, next, o, out.u)) {
       s = next;
       step = std::min(step * 1.5, 1.0 / o.continuation_steps);
       continue;
@@ -120,7 +187,7 @@ LocalGrowth ConformalGrowth::at(std::span<const int> ids, std::span<const Vec2>,
 
 CurvatureMatch match_curvature(const Sheet& sheet, const std::vector<double>& target,
                                const std::vector<double>& measured, double margin) {
-  const std::vector<bool> edge = edge_particles(sheet.grid);
+  const std::vector<bool> edge = edge_particles(sheet);
   const Points& r = sheet.model.reference;
   std::vector<int> edge_list;
   for (size_t p = 0; p < edge.size(); ++p)

@@ -48,7 +48,8 @@ NodeMask outline_mask(const Scene& scene) {
 
 // Holes and slits are cut into the continuum sheet's mesh from the start (continuum_spec),
 // pulled back from the frame to the natural sheet by the stretch: exact while the sheet is the
-// frame's stretch, so before the release and anything else that moves it.
+// frame's stretch, so before the release and anything else that moves it (a growth, a curvature
+// map, gravity).
 void check_continuum_cut(const Scene& scene, const ProtocolStep& cut_step, const CutStep& cut) {
   const std::string field = cut_step.pointer + (cut.hole ? "/hole" : "/line");
   for (const ProtocolStep& step : scene.protocol) {
@@ -56,6 +57,7 @@ void check_continuum_cut(const Scene& scene, const ProtocolStep& cut_step, const
     const auto kind = step.kind();
     const auto* load = step.as<LoadStep>();
     if (kind == ProtocolStep::Kind::release || kind == ProtocolStep::Kind::grow ||
+        kind == ProtocolStep::Kind::curvature_map ||
         (load && load->gravity && *load->gravity != 0.0))
       throw InputError(field,
                        std::string("on the continuum model a cut is made before the sheet moves "
@@ -68,16 +70,16 @@ void check_continuum_cut(const Scene& scene, const ProtocolStep& cut_step, const
 // The steps the continuum sheet cannot take yet, refused before anything runs.
 void check_continuum_protocol(const Scene& scene) {
   for (const ProtocolStep& step : scene.protocol) {
-    const auto kind = step.kind();
     const auto* grow = step.as<GrowStep>();
     if (grow && grow->grow.family)
       throw InputError(step.pointer + "/family",
                        "a spring family is the lattice's; the continuum sheet grows as a whole "
                        "(leave \"family\" out, or set \"model\": \"lattice\")");
-    if (kind == ProtocolStep::Kind::add_springs || kind == ProtocolStep::Kind::curvature_map)
-      throw InputError(step.pointer, std::string("the continuum model does not take ") +
-                                         step_name(kind) +
-                                         " steps yet; set \"model\": \"lattice\"");
+    if (const auto* add = step.as<AddSpringsStep>(); add && add->along_given)
+      throw InputError(step.pointer + "/along",
+                       "spring families are the lattice's; on the continuum sheet added springs "
+                       "lie along the mesh's edges (leave \"along\" out, or set \"model\": "
+                       "\"lattice\")");
     if (const auto* cut = step.as<CutStep>()) check_continuum_cut(scene, step, *cut);
   }
   if (scene.simulation.multilevel > 0)

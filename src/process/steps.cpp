@@ -1,6 +1,8 @@
 #include "membra/process/steps.hpp"
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 #include "membra/core/input_error.hpp"
@@ -81,8 +83,19 @@ Path apply_curvature_map(Membrane& m, const CurvatureMapStep& step, const std::s
                          StepEffects& out) {
   const Model& model = m.sheet.model;
   std::vector<double> target(static_cast<size_t>(model.num_particles()));
-  for (int q = 0; q < model.num_particles(); ++q)
-    target[q] = step.curvature(model.reference.col(q).head<2>());
+  for (int q = 0; q < model.num_particles(); ++q) {
+    const Vec2 at = model.reference.col(q).head<2>();
+    try {
+      target[q] = step.curvature(at);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(pointer + "/K", e.what());
+    }
+    // The scene was checked on a grid; a continuum sheet's vertices lie between its nodes.
+    if (!std::isfinite(target[q]))
+      throw InputError(pointer + "/K", "K is not finite at (" + std::to_string(at.x() * 1e3) +
+                                           ", " + std::to_string(at.y() * 1e3) +
+                                           ") mm; it must be a finite number (1/mm^2) everywhere");
+  }
   const ConformalFactor cf = conformal_factor(m.sheet, target);
   CurvatureMapResult cm;
   cm.step = pointer;
@@ -97,10 +110,18 @@ Path apply_curvature_map(Membrane& m, const CurvatureMapStep& step, const std::s
 Path apply_add_springs(Membrane& m, const AddSpringsStep& step, const std::string& pointer,
                        StepEffects& out) {
   AddSpringsSpec spec = step.add;
-  if (spec.stiffness <= 0.0) spec.stiffness = m.sheet.stiffness.stretch;
+  const Material& latex = m.sheet.material;
+  // On a mesh, springs of (sqrt 3 / 2) E t along every edge make a network as stiff in plane as
+  // the latex sheet whatever the edges' length (a triangular network's modulus is 2k / sqrt 3).
+  if (spec.stiffness <= 0.0)
+    spec.stiffness = m.sheet.continuum()
+                         ? 0.5 * std::sqrt(3.0) * latex.youngs_modulus * latex.thickness
+                         : m.sheet.stiffness.stretch;
   Model& model = m.sheet.model;
   const int first = model.added_springs.size();
-  out.report.springs_added = model.added_springs.add_beside(model.springs, m.state.x, spec);
+  out.report.springs_added =
+      m.sheet.continuum() ? model.added_springs.add_along_edges(m.sheet.triangles, m.state.x, spec)
+                          : model.added_springs.add_beside(model.springs, m.state.x, spec);
   if (out.report.springs_added == 0)
     throw InputError(pointer + "/pattern",
                      "the region covers no spring of the sheet (is it between grid nodes, or "

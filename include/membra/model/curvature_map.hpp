@@ -4,8 +4,9 @@
 // curvature is K = -e^{-2u} (u_xx + u_yy). So rest lengths that carry a wanted map K(x, y) follow
 // from the Liouville equation
 //     Laplacian(u) = -K e^{2u},   u = 0 on the sheet's edge (the edge keeps its length),
-// solved on the grid; the released sheet then takes a form with (nearly) that curvature, to the
-// degree that bending lets it. docs/curvature_map.md has the method and its limits.
+// solved on the grid or the mesh; the released sheet then takes a form with (nearly) that
+// curvature, to the degree that bending lets it. docs/curvature_map.md has the method and its
+// limits.
 #include <string>
 #include <vector>
 
@@ -17,7 +18,8 @@ namespace membra {
 struct ConformalOptions {
   int continuation_steps = 8;  // K is ramped from 0 in this many steps (halved on trouble)
   int max_newton = 25;         // Newton iterations per step
-  double tolerance = 1e-10;    // on max |Laplacian(u) + K e^{2u}| x h^2
+  double tolerance = 1e-10;    // on max |Laplacian(u) + K e^{2u}| x h^2 (on a mesh: x the
+                               // area lumped to the particle)
 };
 
 struct ConformalFactor {
@@ -28,12 +30,15 @@ struct ConformalFactor {
 
 // Particles on the sheet's edge: those missing one of their four grid neighbours.
 std::vector<bool> edge_particles(const GridSheet& grid);
+// ... or, on a continuum sheet, the mesh's boundary vertices (outline, holes and slits).
+std::vector<bool> edge_particles(const Sheet& sheet);
 
 // Solves the Liouville equation for the target curvature K (1/m^2, per particle) with the 5-point
-// Laplacian on the sheet's grid. Ramps K from 0 so the solution stays on the branch connected to
-// the flat sheet; where that branch ends (the map asks for more curvature than a sheet with this
-// edge can carry, e.g. more than a hemisphere for constant K > 0 on a disk) it stops and reports
-// the share reached.
+// Laplacian on the sheet's grid, or on a continuum sheet with the mesh's linear elements
+// (cotangent weights, a third of each triangle's area lumped to its corners). Ramps K from 0 so the
+// solution stays on the branch connected to the flat sheet; where that branch ends (the map asks
+// for more curvature than a sheet with this edge can carry, e.g. more than a hemisphere for
+// constant K > 0 on a disk) it stops and reports the share reached.
 ConformalFactor conformal_factor(const Sheet& sheet, const std::vector<double>& K,
                                  const ConformalOptions& options = {});
 

@@ -71,6 +71,7 @@ struct AddSpringsStep {
   AddSpringsSpec add;  // the region as a shape
   PatternSpec region;
   PathSettings path;
+  bool along_given = false;  // "along" was in the scene (a mesh has no spring families)
 };
 
 // Topological change: a polyline cut (frame coordinates, m) and/or a hole.

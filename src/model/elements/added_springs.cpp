@@ -1,7 +1,10 @@
 #include "membra/model/elements/added_springs.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "membra/model/elements/spring_kernel.hpp"
 
@@ -24,12 +27,36 @@ void AddedSprings::filter(const std::vector<bool>& keep) {
   for (auto* v : {&rest_length, &stiffness, &damping, &start_length}) keep_where(*v, keep);
 }
 
-int AddedSprings::add_beside(const Springs& lattice, const Points& x, const AddSpringsSpec& spec) {
+namespace {
+
+void check_added_springs_spec(const AddSpringsSpec& spec) {
   if (!spec.region) throw std::invalid_argument("add_springs: no region");
   if (spec.count < 1) throw std::invalid_argument("add_springs: count must be >= 1");
   if (!(spec.stiffness > 0.0)) throw std::invalid_argument("add_springs: stiffness must be > 0");
   if (!(spec.rest_factor > 0.0))
     throw std::invalid_argument("add_springs: rest factor must be > 0");
+}
+
+}  // namespace
+
+int AddedSprings::add_along_edges(const std::vector<Triangle>& triangles, const Points& x,
+                                  const AddSpringsSpec& spec) {
+  check_added_springs_spec(spec);
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+  int pairs = 0;
+  for (const auto& [pa, pb] : edges) {
+    if (fraction_inside(*spec.region, x.col(pa).head<2>(), x.col(pb).head<2>()) < 0.5) continue;
+    const double length = (x.col(pb) - x.col(pa)).norm();
+    push(pa, pb, spec.rest_factor * length, spec.count * spec.stiffness, 0.0, length);
+    ++pairs;
+  }
+  return pairs * spec.count;
+}
+
+int AddedSprings::add_beside(const Springs& lattice, const Points& x, const AddSpringsSpec& spec) {
+  check_added_springs_spec(spec);
   int pairs = 0;
   for (int s = 0; s < lattice.size(); ++s) {
     if (spec.along && lattice.family[s] != *spec.along) continue;

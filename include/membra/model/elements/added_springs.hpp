@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "membra/geometry/triangulation.hpp"
 #include "membra/model/elements/element_set.hpp"
 #include "membra/model/elements/set_context.hpp"
 #include "membra/model/elements/springs.hpp"
@@ -47,6 +48,10 @@ struct AddedSprings {
   // of springs added (count x pairs), 0 if the region covers none. Throws std::invalid_argument
   // for a spec without a region, a count below 1 or a stiffness or rest factor not positive.
   int add_beside(const Springs& lattice, const Points& x, const AddSpringsSpec& spec);
+  // The continuum sheet's: one spring along every edge of the mesh `triangles` whose length at x
+  // lies at least half inside the region (`along` is not read), as add_beside otherwise.
+  int add_along_edges(const std::vector<Triangle>& triangles, const Points& x,
+                      const AddSpringsSpec& spec);
   // Moves the rest lengths of the springs from `first` on from their start length (level 0) to
   // rest_factor x that length (level 1), for a gradual path.
   void set_level(int first, double rest_factor, double level);
