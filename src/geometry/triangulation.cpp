@@ -23,6 +23,13 @@ std::vector<Triangle> triangulate(const GridSheet& sheet) {
   return tris;
 }
 
+std::map<std::pair<int, int>, int> edge_counts(const std::vector<Triangle>& triangles) {
+  std::map<std::pair<int, int>, int> count;
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
+  return count;
+}
+
 Points vertex_normals(const Points& x, const std::vector<Triangle>& triangles) {
   Points n = Points::Zero(3, x.cols());
   for (const Triangle& t : triangles) {

@@ -41,14 +41,12 @@ MeshSpec resolved(const ContinuumSpec& s) {
 
 // The rim: the particles on edges that only one triangle has, with the outward normal.
 void find_rim(const std::vector<Triangle>& tris, const Points& x, SheetMesh& mesh) {
-  std::map<std::pair<int, int>, int> count;
-  for (const Triangle& t : tris)
-    for (int k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
+  const std::map<std::pair<int, int>, int> count = edge_counts(tris);
   std::map<int, Vec2> normal;
   for (const Triangle& t : tris)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
-      if (count[std::minmax(a, b)] != 1) continue;
+      if (count.at(std::minmax(a, b)) != 1) continue;
       const Vec2 e = x.col(b).head<2>() - x.col(a).head<2>();
       const Vec2 out(e.y(), -e.x());  // counter-clockwise triangles: the outside is on the right
       normal.try_emplace(a, Vec2::Zero()).first->second += out;

@@ -1,10 +1,9 @@
 #include "membra/model/curvature_map.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <map>
 #include <sstream>
-#include <utility>
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
@@ -128,11 +127,8 @@ bool newton(const Liouville& op, const std::vector<int>& unknown, int n,
 std::vector<bool> edge_particles(const Sheet& sheet) {
   if (!sheet.continuum()) return edge_particles(sheet.grid);
   // An edge of one triangle only is on the outline, a hole's rim or a slit's lip.
-  std::map<std::pair<int, int>, int> count;
-  for (const Triangle& t : sheet.triangles)
-    for (int k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
   std::vector<bool> edge(static_cast<size_t>(sheet.model.num_particles()), false);
-  for (const auto& [e, n] : count)
+  for (const auto& [e, n] : edge_counts(sheet.triangles))
     if (n == 1) edge[static_cast<size_t>(e.first)] = edge[static_cast<size_t>(e.second)] = true;
   return edge;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // Triangles of a sheet, for drawing and measuring, and what drawing them needs: smooth normals
 // and the flat sheet as texture coordinates.
+#include <map>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,6 +17,10 @@ using Triangle = Eigen::Vector3i;  // particle indices, counter-clockwise seen f
 // Splits every active cell into two triangles. The diagonal alternates with the parity of
 // (i + j) so that the mesh has no preferred direction (a single diagonal would bias measures).
 std::vector<Triangle> triangulate(const GridSheet& sheet);
+
+// How many triangles share each edge, the edge as (smaller, larger) particle index: 1 on the
+// mesh's boundary (outline, holes, opened slits), 2 inside.
+std::map<std::pair<int, int>, int> edge_counts(const std::vector<Triangle>& triangles);
 
 // Unit vertex normals, the area-weighted mean of the triangles' around each vertex (+z where a
 // vertex has none, or they cancel).

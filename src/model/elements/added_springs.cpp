@@ -1,10 +1,7 @@
 #include "membra/model/elements/added_springs.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <set>
 #include <stdexcept>
-#include <utility>
 
 #include "membra/model/elements/spring_kernel.hpp"
 
@@ -42,11 +39,9 @@ void check_added_springs_spec(const AddSpringsSpec& spec) {
 int AddedSprings::add_along_edges(const std::vector<Triangle>& triangles, const Points& x,
                                   const AddSpringsSpec& spec) {
   check_added_springs_spec(spec);
-  std::set<std::pair<int, int>> edges;
-  for (const auto& t : triangles)
-    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
   int pairs = 0;
-  for (const auto& [pa, pb] : edges) {
+  for (const auto& [edge, shared] : edge_counts(triangles)) {
+    const auto [pa, pb] = edge;
     if (fraction_inside(*spec.region, x.col(pa).head<2>(), x.col(pb).head<2>()) < 0.5) continue;
     const double length = (x.col(pb) - x.col(pa)).norm();
     push(pa, pb, spec.rest_factor * length, spec.count * spec.stiffness, 0.0, length);
