@@ -16,6 +16,14 @@ double bilayer_curvature_per_strain(const Material& base, const Material& layer)
   return t / (base.thickness + layer.thickness);
 }
 
+Eigen::Matrix2d in_plane_gradient(const Points& reference, const Points& x, int a, int b, int c) {
+  Eigen::Matrix2d r, q;
+  r << (reference.col(b) - reference.col(a)).head<2>(),
+      (reference.col(c) - reference.col(a)).head<2>();
+  q << (x.col(b) - x.col(a)).head<2>(), (x.col(c) - x.col(a)).head<2>();
+  return q * r.inverse();
+}
+
 Eigen::Matrix2d misfit_strain(const Eigen::Matrix2d& f) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(f * f.transpose());
   const Eigen::Vector2d inv_stretch = eig.eigenvalues().cwiseMax(1e-12).cwiseSqrt().cwiseInverse();

@@ -3,6 +3,7 @@
 // (elements/hinges.hpp; docs/process.md "Bilayer").
 #include <Eigen/Core>
 
+#include "membra/core/vec.hpp"
 #include "membra/model/material.hpp"
 
 namespace membra {
@@ -14,6 +15,10 @@ namespace membra {
 // longer one. For a plate with equal Poisson ratios the same factor maps the misfit strain
 // tensor to the curvature tensor.
 double bilayer_curvature_per_strain(const Material& base, const Material& layer);
+
+// The in-plane deformation gradient of triangle (a, b, c) from the natural sheet (`reference`)
+// to the positions x, seen from above.
+Eigen::Matrix2d in_plane_gradient(const Points& reference, const Points& x, int a, int b, int c);
 
 // eps = I - V^-1 with V = sqrt(F F^T), F the in-plane deformation gradient from the natural
 // sheet to the state the coat sets in: the strain by which the latex, bonded to resin at rest in

@@ -18,16 +18,6 @@ namespace {
 using Mat2 = Eigen::Matrix2d;
 constexpr double kNu = 1.0 / 3.0;  // the lattice's Poisson ratio (material.hpp)
 
-// In-plane deformation gradient of triangle (a, b, c) from paper to current coordinates.
-Mat2 deformation(const Points& reference, const Points& x, int a, int b, int c) {
-  Mat2 r, q;
-  r.col(0) = (reference.col(b) - reference.col(a)).head<2>();
-  r.col(1) = (reference.col(c) - reference.col(a)).head<2>();
-  q.col(0) = (x.col(b) - x.col(a)).head<2>();
-  q.col(1) = (x.col(c) - x.col(a)).head<2>();
-  return q * r.inverse();
-}
-
 // Each directed edge of a (counter-clockwise) triangle, with the vertex to its left.
 struct Half {
   int tri, opposite;
@@ -145,8 +135,8 @@ int Hinges::impregnate(const Impregnation& at) {
     const Triangle& t1 = tris[left.tri];
     const Triangle& t2 = tris[right->second.tri];
     const Points& ref = sheet.model.reference;
-    const Mat2 fg =
-        0.5 * (deformation(ref, x, t1[0], t1[1], t1[2]) + deformation(ref, x, t2[0], t2[1], t2[2]));
+    const Mat2 fg = 0.5 * (in_plane_gradient(ref, x, t1[0], t1[1], t1[2]) +
+                           in_plane_gradient(ref, x, t2[0], t2[1], t2[2]));
     const Eigen::Vector2d ev = (x.col(b) - x.col(a)).head<2>();
     if (!(ev.norm() > 0.0)) continue;
     const double full =

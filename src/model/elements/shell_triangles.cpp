@@ -531,7 +531,7 @@ int ShellTriangles::impregnate(const Impregnation& at) {
     if (at.bilayer) {
       // The coat on the convex side: a bulge towards it, II < 0 seen from that face.
       const Eigen::Matrix2d e = in_plane_edges(at.x, p);
-      const Eigen::Matrix2d f = e * in_plane_edges(at.sheet.model.reference, p).inverse();
+      const Eigen::Matrix2d f = in_plane_gradient(at.sheet.model.reference, at.x, p[0], p[1], p[2]);
       const Eigen::Matrix2d k0 = -sign * per_strain * misfit_strain(f);
       const Eigen::Matrix2d ii = e.transpose() * k0 * e;
       coat_curvature[k] = Eigen::Vector3d(ii(0, 0), ii(0, 1), ii(1, 1));
