@@ -45,6 +45,7 @@ const std::vector<std::string_view> kSimulationKeys = {"solver",
                                                        "explore",
                                                        "multilevel",
                                                        "max_seconds",
+                                                       "tangent_correction",
                                                        "ramp_seconds"};
 
 // Largest grid we accept; the robustness issue adds a memory-based limit.
@@ -186,6 +187,7 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
   sim.path_tolerance =
       std::max(sim.tolerance, s.number("path_tolerance", sim.tolerance, Bounds{0.0, 1.0, true}));
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
+  sim.tangent_correction = s.boolean("tangent_correction", sim.tangent_correction);
   sim.explore = static_cast<int>(s.integer("explore", sim.explore, 1, 1000));
   sim.multilevel = static_cast<int>(s.integer("multilevel", sim.multilevel, 0, kMaxNodesPerSide));
   if (sim.multilevel > 0 && sim.multilevel < 5)

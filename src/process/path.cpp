@@ -50,6 +50,7 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
   o.steps = sim.steps;
   o.stop_when_converged = sim.stop_when_converged;
   o.newton_cache = std::move(newton_cache);
+  o.tangent_correction = sim.tangent_correction;
   if (p.deadline) {  // what is left of the run's budget; a spent budget stops at the first check
     const double left =
         std::chrono::duration<double>(*p.deadline - std::chrono::steady_clock::now()).count();
@@ -88,6 +89,7 @@ void add_work(SolveReport& total, const SolveReport& r) {
   total.factorizations += r.factorizations;
   total.setups += r.setups;
   total.negative_curvature_steps += r.negative_curvature_steps;
+  total.tangent_corrections += r.tangent_corrections;
   total.increments += r.increments;
   total.increments_halved += r.increments_halved;
   total.wall_seconds += r.wall_seconds;

@@ -13,6 +13,7 @@
 #include "membra/model/forces.hpp"
 #include "membra/solve/newton_workspace.hpp"
 #include "membra/solve/rigid_gauge.hpp"
+#include "membra/solve/tangent_correction.hpp"
 
 namespace membra {
 namespace {
@@ -72,7 +73,8 @@ class Newton {
         exact_(ws.exact),
         projected_(ws.projected),
         llt_(ws.llt),
-        analysed_(ws.analysed) {
+        analysed_(ws.analysed),
+        tangent_(model, dof, ndof) {
     length_ = saddle_escape_length(model);
   }
 
@@ -86,9 +88,12 @@ class Newton {
   bool continuation_step();
   bool exact_is_positive_definite();
   bool factorize(const Eigen::SparseMatrix<double>& a);
-  bool line_search(const Eigen::VectorXd& d, double slope, double curvature);
-  Eigen::VectorXd gradient() const;
-  Points moved(const Eigen::VectorXd& d, double alpha) const;
+  bool line_search(const Eigen::VectorXd& d, double slope, double curvature,
+                   const Eigen::VectorXd& e = {});
+  Eigen::VectorXd corrected(const Eigen::VectorXd& d, const HessianAssembler& h);
+  Eigen::VectorXd gradient(const Points& f) const;
+  Eigen::VectorXd gradient() const { return gradient(f_); }
+  Points moved(const Eigen::VectorXd& d, double alpha, const Eigen::VectorXd& e = {}) const;
   void evaluate();
 
   const Model& model_;
@@ -100,6 +105,7 @@ class Newton {
   HessianAssembler &exact_, &projected_;  // the workspace's
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>& llt_;
   bool& analysed_;
+  TangentCorrection tangent_;
   Points f_;
   double energy_ = 0.0;
   double mu_ = 1e-8;       // shift of the projected matrix, in units of its diagonal
@@ -118,18 +124,38 @@ void Newton::evaluate() {
   r_.residual_relative = r_.residual / o_.force_scale;
 }
 
-Eigen::VectorXd Newton::gradient() const {
+Eigen::VectorXd Newton::gradient(const Points& f) const {
   Eigen::VectorXd g(ndof_);
   for (size_t k = 0; k < dof_.size(); ++k)
-    if (dof_[k] >= 0) g[dof_[k]] = -f_.data()[k];
+    if (dof_[k] >= 0) g[dof_[k]] = -f.data()[k];
   return g;
 }
 
-Points Newton::moved(const Eigen::VectorXd& d, double alpha) const {
+// x + alpha d + alpha^2 e: a straight step, or a curved one with a second-order correction e.
+Points Newton::moved(const Eigen::VectorXd& d, double alpha, const Eigen::VectorXd& e) const {
   Points xt = x_;
+  const bool curved = e.size() == d.size();
   for (size_t k = 0; k < dof_.size(); ++k)
-    if (dof_[k] >= 0) xt.data()[k] += alpha * d[dof_[k]];
+    if (const int i = dof_[k]; i >= 0)
+      xt.data()[k] += alpha * d[i] + (curved ? alpha * alpha * e[i] : 0.0);
   return xt;
+}
+
+// The tangent correction of the step d (tangent_correction.hpp) with h the Hessian d was solved
+// with; kept only where it lowers the energy at the step's end, else empty.
+Eigen::VectorXd Newton::corrected(const Eigen::VectorXd& d, const HessianAssembler& h) {
+  if (!tangent_.applies() || !o_.tangent_correction) return {};
+  const Points xt = moved(d, 1.0);
+  Points ft;
+  compute_static_forces(model_, xt, ft);
+  ++r_.force_passes;
+  Eigen::VectorXd e;
+  if (!ft.allFinite() || !tangent_.correction(x_, h.lower(), gradient(ft), e)) return {};
+  const double straight = potential_energy(model_, xt);
+  const double curved = potential_energy(model_, moved(d, 1.0, e));
+  if (!(curved < straight)) return {};
+  ++r_.tangent_corrections;
+  return e;
 }
 
 bool Newton::factorize(const Eigen::SparseMatrix<double>& a) {
@@ -149,10 +175,11 @@ bool Newton::factorize(const Eigen::SparseMatrix<double>& a) {
 // of what the local model promises (slope alpha + curvature alpha^2 / 2; the curvature term only
 // for negative-curvature steps). Near convergence the change drowns in round-off, so a step that
 // lowers the residual is accepted too.
-bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvature) {
+bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvature,
+                         const Eigen::VectorXd& e) {
   double alpha = 1.0;
   for (int k = 0; k < 40; ++k, alpha *= 0.5) {
-    Points xt = moved(d, alpha);
+    Points xt = moved(d, alpha, e);
     const double et = potential_energy(model_, xt);
     if (!std::isfinite(et)) continue;
     const double promised = alpha * slope + 0.5 * alpha * alpha * std::min(curvature, 0.0);
@@ -191,7 +218,7 @@ bool Newton::exact_step() {
   const Eigen::VectorXd g = gradient();
   const Eigen::VectorXd d = llt_.solve(-g);
   const double slope = g.dot(d);
-  return slope < 0.0 && line_search(d, slope, 0.0);
+  return slope < 0.0 && line_search(d, slope, 0.0, corrected(d, exact_));
 }
 
 // Factorizes the projected Hessian at x plus mu times its diagonal, growing mu (remembered

@@ -78,6 +78,7 @@ SolveReport solve_with(Solver solver, const Model& model, State& state, const So
       o.max_seconds = in.max_seconds;
       o.progress = in.progress;
       o.cache = in.newton_cache;
+      o.tangent_correction = in.tangent_correction;
       return solve_newton(model, state, o);
     }
     case Solver::rk4:

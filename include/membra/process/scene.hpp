@@ -48,6 +48,9 @@ struct SimulationSpec {
   // Wall-time budget of a run (each release of an exploration), s; 0: none. A run that
   // exhausts it stops unconverged and says so.
   double max_seconds = 0.0;
+  // Newton on a continuum sheet: curve each step by the tangent correction
+  // (solve/tangent_correction.hpp); false: straight steps, for comparison.
+  bool tangent_correction = true;
 
   // True for the equilibrium solvers (static, newton), false for time stepping.
   bool is_static() const { return solver_info(solver).equilibrium; }

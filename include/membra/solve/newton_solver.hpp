@@ -33,6 +33,9 @@ struct NewtonOptions {
   // Pseudo-transient continuation instead of line-searched Newton steps away from a minimum
   // (the solver "ptc"; measured against Newton in docs/performance.md).
   bool continuation = false;
+  // On a continuum sheet, curve each Newton step by the tangent correction
+  // (tangent_correction.hpp), which takes back the stretch a bending step brings.
+  bool tangent_correction = true;
   std::function<void(const Progress&)> progress;
   // Keeps the sparsity pattern and symbolic analysis for the next solve of the same sheet (the
   // next increment of a path); none: every solve sets up its own.

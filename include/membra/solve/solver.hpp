@@ -59,6 +59,7 @@ struct SolverSettings {
   double max_seconds = 0.0;         // wall-time budget (0: none)
   std::function<void(const Progress&)> progress;
   std::function<void(const State&, long step)> on_check;  // time stepping: e.g. frames
+  bool tangent_correction = true;             // newton: NewtonOptions::tangent_correction
   std::shared_ptr<NewtonCache> newton_cache;  // newton: setup kept between solves (may be null)
 };
 

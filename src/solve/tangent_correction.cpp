@@ -1,0 +1,92 @@
+#include "membra/solve/tangent_correction.hpp"
+
+#include <omp.h>
+#include <Eigen/CholmodSupport>
+
+namespace membra {
+namespace {
+
+// The unit normal at each particle: the sum of its membrane triangles' area vectors, normalized
+// (z where a particle has none, or they cancel).
+Points vertex_normals(const MembraneTriangles& t, const Points& x) {
+  Points n = Points::Zero(3, x.cols());
+  for (int i = 0; i < t.size(); ++i) {
+    const auto [a, b, c] = t.ids(i);
+    const Vec3 area = (x.col(b) - x.col(a)).cross(x.col(c) - x.col(a));
+    n.col(a) += area, n.col(b) += area, n.col(c) += area;
+  }
+  for (Eigen::Index p = 0; p < n.cols(); ++p) {
+    const double length = n.col(p).norm();
+    n.col(p) = length > 0.0 ? Vec3(n.col(p) / length) : Vec3::UnitZ();
+  }
+  return n;
+}
+
+}  // namespace
+
+struct TangentCorrection::Factor {
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
+  Eigen::Index analysed_nonzeros = -1;  // the pattern llt was analysed on
+};
+
+TangentCorrection::~TangentCorrection() = default;
+
+TangentCorrection::TangentCorrection(const Model& model, const std::vector<int>& dof, int ndof)
+    : model_(model),
+      dof_(dof),
+      ndof_(ndof),
+      applies_(model.membrane_triangles.size() > 0),
+      factor_(std::make_unique<Factor>()) {
+  for (int p = 0; p < model.num_particles(); ++p)
+    if (dof[3 * p] >= 0 || dof[3 * p + 1] >= 0 || dof[3 * p + 2] >= 0) movable_.push_back(p);
+  factor_->llt.cholmod().print = 0;
+}
+
+// ndof x 2m: columns 2k and 2k + 1 are two orthonormal tangents at movable particle k, on its
+// free coordinates (every coordinate entered, zeros too, so the pattern does not change).
+Eigen::SparseMatrix<double> TangentCorrection::basis(const Points& x) const {
+  const Points n = vertex_normals(model_.membrane_triangles, x);
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(6 * movable_.size());
+  for (size_t k = 0; k < movable_.size(); ++k) {
+    const int p = movable_[k];
+    const Vec3 normal = n.col(p);
+    Eigen::Index axis = 0;
+    normal.cwiseAbs().minCoeff(&axis);
+    const Vec3 t1 = normal.cross(Vec3::Unit(axis)).normalized();
+    const Vec3 t2 = normal.cross(t1);
+    for (int c = 0; c < 3; ++c) {
+      const int d = dof_[static_cast<size_t>(3 * p + c)];
+      if (d < 0) continue;
+      entries.emplace_back(d, static_cast<int>(2 * k), t1[c]);
+      entries.emplace_back(d, static_cast<int>(2 * k + 1), t2[c]);
+    }
+  }
+  Eigen::SparseMatrix<double> b(ndof_, static_cast<Eigen::Index>(2 * movable_.size()));
+  b.setFromTriplets(entries.begin(), entries.end());
+  return b;
+}
+
+bool TangentCorrection::correction(const Points& x, const Eigen::SparseMatrix<double>& lower,
+                                   const Eigen::VectorXd& g_trial, Eigen::VectorXd& e) {
+  const Eigen::SparseMatrix<double> b = basis(x);
+  const Eigen::SparseMatrix<double> h = lower.selfadjointView<Eigen::Lower>();
+  Eigen::SparseMatrix<double> a =
+      Eigen::SparseMatrix<double>(b.transpose() * h * b).triangularView<Eigen::Lower>();
+  // In-plane rigid motions of a free sheet, and tangents on held coordinates, are not stiffened:
+  // a small shift in the diagonal's metric keeps them factorizable (and unmoved).
+  const Eigen::VectorXd diag = a.diagonal().cwiseAbs();
+  const double floor = 1e-12 * (diag.size() ? diag.maxCoeff() : 1.0);
+  for (Eigen::Index k = 0; k < a.outerSize(); ++k) a.coeffRef(k, k) += 1e-8 * diag[k] + floor;
+  const int levels = omp_get_max_active_levels();  // as in newton_solver.cpp's factorize
+  omp_set_max_active_levels(0);
+  auto& [llt, analysed] = *factor_;
+  if (a.nonZeros() != analysed) llt.analyzePattern(a), analysed = a.nonZeros();
+  llt.factorize(a);
+  omp_set_max_active_levels(levels);
+  if (llt.info() != Eigen::Success) return false;
+  e = -(b * llt.solve(b.transpose() * g_trial));
+  return e.allFinite();
+}
+
+}  // namespace membra
