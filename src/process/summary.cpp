@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "membra/measure/fitted_curvature.hpp"
 #include "membra/measure/global_curvature.hpp"
 #include "membra/measure/hole_edge.hpp"
 #include "membra/measure/mesh_hole_edge.hpp"
@@ -28,8 +29,12 @@ void summarize_form(RunResult& r) {
   r.kinetic_energy = kinetic_energy(m, s.v);
   r.shape = summarize_shape(s.x, m.reference);
   r.curvature = gaussian_curvature(s.x, mem.sheet.triangles);
-  // The grid's alternating valence defects need the filter; a Delaunay mesh has none.
-  if (!mem.sheet.continuum()) smooth_density_on_grid(mem.sheet.grid, r.curvature);
+  // The grid's alternating valence defects need the filter; an irregular mesh's defects scatter
+  // from vertex to vertex, and the fitted surface reads the smooth field.
+  if (mem.sheet.continuum())
+    smooth_density_on_mesh(s.x, mem.sheet.triangles, r.curvature);
+  else
+    smooth_density_on_grid(mem.sheet.grid, r.curvature);
   r.form = classify_form(r.curvature);
   r.curvature_global = global_curvature(s.x, m.reference, mem.sheet.triangles);
   if (!r.curvature_global.interior.empty()) r.form_global = classify_form(r.curvature_global);

@@ -4,6 +4,7 @@
 
 #include "membra/core/units.hpp"
 #include "membra/measure/curvature.hpp"
+#include "membra/measure/fitted_curvature.hpp"
 #include "membra/measure/stress.hpp"
 
 namespace membra {
@@ -42,7 +43,9 @@ ColorField color_field(const ViewerSession& session, ColorMode mode) {
     }
     case ColorMode::curvature: {
       GaussianCurvature k = gaussian_curvature(x, m.sheet.triangles);
-      if (session.scene().benchmark_n == 0 && !m.sheet.continuum())
+      if (m.sheet.continuum())
+        smooth_density_on_mesh(x, m.sheet.triangles, k);
+      else if (session.scene().benchmark_n == 0)
         smooth_density_on_grid(m.sheet.grid, k);
       f.values = k.density;  // 1/m^2, the unit every output shows
       std::tie(f.lo, f.hi) = symmetric_range(f.values, 1e-6);
