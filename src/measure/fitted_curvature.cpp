@@ -35,20 +35,10 @@ std::vector<int> two_ring(int v, const std::vector<std::vector<int>>& ring) {
   return out;
 }
 
-// The sum of each vertex's triangles' area vectors (twice their areas, along their normals).
-Points area_normals(const Points& x, const std::vector<Triangle>& tris) {
-  Points n = Points::Zero(3, x.cols());
-  for (const Triangle& t : tris) {
-    const Vec3 a = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
-    for (int k = 0; k < 3; ++k) n.col(t[k]) += a;
-  }
-  return n;
-}
-
-// The fitted graph's K at vertex v with normal `normal` over `near`; 0 if it cannot be fitted.
+// The fitted graph's K at vertex v with unit normal `normal` over `near`; 0 if it cannot be fitted.
 double fitted_at(const Points& x, int v, const Vec3& normal, const std::vector<int>& near) {
-  if (near.size() < 5 || !(normal.norm() > 0.0)) return 0.0;
-  const Vec3 w = normal.normalized();
+  if (near.size() < 5) return 0.0;
+  const Vec3& w = normal;
   Eigen::Index axis = 0;
   w.cwiseAbs().minCoeff(&axis);
   const Vec3 u = w.cross(Vec3::Unit(axis)).normalized(), t = w.cross(u);
@@ -75,7 +65,7 @@ std::vector<double> fitted_gaussian_curvature(const Points& x, const std::vector
                                               const std::vector<bool>& interior) {
   const int n = static_cast<int>(x.cols());
   const auto ring = one_rings(n, tris);
-  const Points normal = area_normals(x, tris);
+  const Points normal = vertex_normals(x, tris);
   std::vector<double> k(static_cast<size_t>(n), 0.0);
   for (int v = 0; v < n; ++v)
     if (interior[static_cast<size_t>(v)])

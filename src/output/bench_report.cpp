@@ -51,6 +51,7 @@ nlohmann::json scene_bench_report(const std::vector<SceneBenchRow>& rows) {
                  {"iterations", r.report.iterations},
                  {"factorizations", r.report.factorizations},
                  {"negative_curvature_steps", r.report.negative_curvature_steps},
+                 {"tangent_corrections", r.report.tangent_corrections},
                  {"increments", r.increments},
                  {"residual_relative", r.report.residual_relative},
                  {"height_mm", r.height * 1e3},

@@ -216,14 +216,25 @@ void report_branches(const RunResult& r, json& j) {
 // The grids of a multilevel run (simulation.multilevel), coarsest first.
 void report_levels(const RunResult& r, json& j) {
   j["levels"] = json::array();
-  for (const GridLevel& l : r.levels)
-    j["levels"].push_back({{"resolution", {l.nx, l.ny}},
-                           {"iterations", l.solve.iterations},
-                           {"factorizations", l.solve.factorizations},
-                           {"converged", l.solve.converged},
-                           {"residual_relative", l.solve.residual_relative},
-                           {"wall_seconds", l.solve.wall_seconds},
-                           {"start", l.from_coarser ? "coarser grid" : "path"}});
+  for (const GridLevel& l : r.levels) {
+    const bool mesh = l.max_edge > 0.0;
+    json level = {{"iterations", l.solve.iterations},
+                  {"factorizations", l.solve.factorizations},
+                  {"converged", l.solve.converged},
+                  {"residual_relative", l.solve.residual_relative},
+                  {"wall_seconds", l.solve.wall_seconds},
+                  {"start", !l.from_coarser ? "path"
+                            : mesh          ? "coarser mesh"
+                                            : "coarser grid"}};
+    if (mesh) {
+      level["max_edge_mm"] = l.max_edge / units::mm;
+      level["elements_across"] = l.elements_across;
+      level["vertices"] = l.vertices;
+    } else {
+      level["resolution"] = {l.nx, l.ny};
+    }
+    j["levels"].push_back(level);
+  }
 }
 
 // The units of the run and form keys.

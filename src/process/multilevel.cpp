@@ -8,7 +8,9 @@
 #include <string>
 
 #include "membra/core/stopwatch.hpp"
+#include "membra/core/units.hpp"
 #include "membra/geometry/grid_prolongation.hpp"
+#include "membra/geometry/mesh_prolongation.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {
@@ -29,18 +31,27 @@ std::pair<int, int> halved(const std::pair<int, int>& grid) {
   return x_longer ? std::pair{a, b} : std::pair{b, a};
 }
 
-// True when the protocol's last step changes the sheet so that a solve follows (the release,
-// grow, ...): only that step is carried from a coarser grid.
+// True when the protocol's last step changes the sheet so that a solve follows along a path
+// (the release, grow, ...): only that step is carried from a coarser level. Not a cut: it is
+// solved at once, and it adds and removes particles after the start form would be laid on them.
 bool last_step_is_solved(const Scene& scene) {
   if (scene.protocol.empty()) return false;
   const ProtocolStep& last = scene.protocol.back();
-  return !last.as<StretchStep>() && !last.as<ImpregnateStep>();
+  return !last.as<StretchStep>() && !last.as<ImpregnateStep>() && !last.as<CutStep>();
 }
 
-// Progress lines of a coarser level name its grid: "32x32 release 3/10".
-ProgressFn level_progress(const ProgressFn& progress, int nx, int ny) {
+// A level's name: "32x32" (a grid) or "max_edge 20 mm" (a mesh).
+std::string level_name(const GridLevel& l) {
+  if (l.max_edge <= 0.0) return std::to_string(l.nx) + "x" + std::to_string(l.ny);
+  std::ostringstream name;
+  name << "max_edge " << l.max_edge / units::mm << " mm";
+  return name.str();
+}
+
+// Progress lines of a coarser level name it: "32x32 release 3/10".
+ProgressFn level_progress(const ProgressFn& progress, const GridLevel& level) {
   if (!progress) return {};
-  const std::string prefix = std::to_string(nx) + "x" + std::to_string(ny) + " ";
+  const std::string prefix = level_name(level) + " ";
   return [progress, prefix](const Progress& p) {
     Progress q = p;
     q.stage = prefix + q.stage;
@@ -55,9 +66,12 @@ RunResult run_finest(const Scene& scene, const RunResult* coarse, const Progress
   for (size_t k = 0; k + 1 < scene.protocol.size(); ++k)
     if (!run.apply(scene.protocol[k])) return run.finish();
   if (coarse) {
-    const Points start =
-        prolongate(coarse->prepared.membrane.sheet.grid, coarse->prepared.membrane.state.x,
-                   run.partial().prepared.membrane.sheet.grid);
+    const Sheet& from = coarse->prepared.membrane.sheet;
+    const Sheet& to = run.partial().prepared.membrane.sheet;
+    const Points& x = coarse->prepared.membrane.state.x;
+    const Points start = to.continuum() ? prolongate_on_mesh(from.model.reference, from.triangles,
+                                                             x, to.model.reference, to.triangles)
+                                        : prolongate(from.grid, x, to.grid);
     run.apply(scene.protocol.back(), &start);
     // A form that creeps into place past one solve's iterations but is nearly there (within
     // 100x the tolerance) is given two more solves before the path is followed instead.
@@ -74,12 +88,64 @@ RunResult run_finest(const Scene& scene, const RunResult* coarse, const Progress
   return run.finish();
 }
 
+// The levels of `scene` (grids or meshes), coarsest first, its own last.
+std::vector<GridLevel> levels_of(const Scene& scene) {
+  if (scene.model == SheetModel::continuum) return multilevel_meshes(scene);
+  std::vector<GridLevel> levels;
+  for (const auto& [nx, ny] : multilevel_grids(scene)) {
+    GridLevel level;
+    level.nx = nx, level.ny = ny;
+    levels.push_back(level);
+  }
+  return levels;
+}
+
+// The scene at another level: its grid or its mesh.
+Scene scene_at_level(const Scene& scene, const GridLevel& level) {
+  Scene s = scene_at_resolution(scene, level.max_edge > 0.0 ? scene.grid.nx : level.nx,
+                                level.max_edge > 0.0 ? scene.grid.ny : level.ny);
+  if (level.max_edge > 0.0) {
+    s.mesh.max_edge = level.max_edge;
+    s.mesh.elements_across = level.elements_across;
+  }
+  return s;
+}
+
+// The level a run made, with its solve: the mesh's vertices as made.
+GridLevel made(GridLevel level, const RunResult& r, bool from_coarser) {
+  level.from_coarser = from_coarser;
+  level.solve = r.solve;
+  if (level.max_edge > 0.0) level.vertices = r.prepared.membrane.sheet.mesh.vertices;
+  return level;
+}
+
 }  // namespace
+
+std::vector<GridLevel> multilevel_meshes(const Scene& scene) {
+  GridLevel own;
+  own.max_edge = scene.mesh.max_edge > 0.0 ? scene.mesh.max_edge
+                                           : std::min(scene.grid.width, scene.grid.height) / 20.0;
+  own.elements_across = scene.mesh.elements_across;
+  std::vector<GridLevel> levels{own};
+  const int coarsest = scene.simulation.multilevel;
+  if (coarsest <= 0 || !scene.simulation.is_static() || !last_step_is_solved(scene)) return levels;
+  const double longer = std::max(scene.grid.width, scene.grid.height);
+  for (;;) {
+    GridLevel next = levels.front();
+    next.max_edge *= 2.0;
+    next.elements_across = std::min(next.elements_across, std::max(2, next.elements_across / 2));
+    if (longer / next.max_edge + 1.0 < coarsest) break;
+    levels.insert(levels.begin(), next);
+  }
+  return levels;
+}
 
 std::vector<std::pair<int, int>> multilevel_grids(const Scene& scene) {
   std::vector<std::pair<int, int>> grids{{scene.grid.nx, scene.grid.ny}};
   const int coarsest = scene.simulation.multilevel;
-  if (coarsest <= 0 || !scene.simulation.is_static() || !last_step_is_solved(scene)) return grids;
+  if (scene.model == SheetModel::continuum || coarsest <= 0 || !scene.simulation.is_static() ||
+      !last_step_is_solved(scene))
+    return grids;
   for (;;) {
     const std::pair<int, int> next = halved(grids.front());
     if (std::max(next.first, next.second) < coarsest) break;
@@ -97,16 +163,21 @@ Scene scene_at_resolution(const Scene& scene, int nx, int ny) {
   return s;
 }
 
+bool has_levels(const Scene& scene) {
+  return levels_of(scene).size() > 1;
+}
+
 RunResult run_multilevel(const Scene& scene, const ProgressFn& progress) {
-  const std::vector<std::pair<int, int>> grids = multilevel_grids(scene);
-  if (grids.size() < 2) return run_scene(scene, progress);
+  const std::vector<GridLevel> own_levels = levels_of(scene);
+  if (own_levels.size() < 2) return run_scene(scene, progress);
   const Stopwatch clock;
-  const auto [cx, cy] = grids[grids.size() - 2];
-  // The coarser grid's run, itself multilevel down to the coarsest.
+  const GridLevel& coarser = own_levels[own_levels.size() - 2];
+  const GridLevel& own = own_levels.back();
+  // The coarser level's run, itself multilevel down to the coarsest.
   const RunResult coarse =
-      run_scene(scene_at_resolution(scene, cx, cy), level_progress(progress, cx, cy));
+      run_scene(scene_at_level(scene, coarser), level_progress(progress, coarser));
   std::vector<GridLevel> levels = coarse.levels;
-  if (levels.empty()) levels.push_back({cx, cy, false, coarse.solve});
+  if (levels.empty()) levels.push_back(made(coarser, coarse, false));
   // The budget is the whole run's: the finer grid gets what the coarser left.
   const auto left = [&] {
     Scene s = scene;
@@ -116,19 +187,20 @@ RunResult run_multilevel(const Scene& scene, const ProgressFn& progress) {
   };
   const bool carry = settled(coarse);
   RunResult r = run_finest(left(), carry ? &coarse : nullptr, progress);
-  levels.push_back({scene.grid.nx, scene.grid.ny, carry, r.solve});
+  levels.push_back(made(own, r, carry));
   // A form carried over that does not settle on the finer grid, or settles at a saddle: that
   // grid follows the path itself, as a run without levels would.
   if (carry && !settled(r) && !r.solve.diverged && !r.out_of_time) {
     r = run_finest(left(), nullptr, progress);
-    levels.push_back({scene.grid.nx, scene.grid.ny, false, r.solve});
+    levels.push_back(made(own, r, false));
   }
   r.levels = std::move(levels);
   return r;
 }
 
 std::string multilevel_hint(const Scene& scene, double seconds) {
-  if (scene.simulation.multilevel > 0 || seconds < 30.0) return "";
+  if (scene.model == SheetModel::continuum || scene.simulation.multilevel > 0 || seconds < 30.0)
+    return "";
   if (std::max(scene.grid.nx, scene.grid.ny) < 64) return "";  // below, levels gain little
   Scene with = scene;
   with.simulation.multilevel = 16;
@@ -147,10 +219,11 @@ std::string levels_summary(const std::vector<GridLevel>& levels) {
   line << "multilevel:";
   for (size_t k = 0; k < levels.size(); ++k) {
     const GridLevel& l = levels[k];
-    line << (k ? "; " : " ") << l.nx << "x" << l.ny << " "
-         << (l.from_coarser ? "from the coarser grid" : "path") << ", " << l.solve.iterations
-         << " iterations, " << std::fixed << std::setprecision(1) << l.solve.wall_seconds << " s"
-         << (l.solve.converged ? "" : " (not converged)");
+    line << (k ? "; " : " ") << level_name(l);
+    if (l.vertices > 0) line << " (" << l.vertices << " vertices)";
+    line << " " << (l.from_coarser ? "from the coarser level" : "path") << ", "
+         << l.solve.iterations << " iterations, " << std::fixed << std::setprecision(1)
+         << l.solve.wall_seconds << " s" << (l.solve.converged ? "" : " (not converged)");
   }
   return line.str();
 }

@@ -82,10 +82,6 @@ void check_continuum_protocol(const Scene& scene) {
                        "\"lattice\")");
     if (const auto* cut = step.as<CutStep>()) check_continuum_cut(scene, step, *cut);
   }
-  if (scene.simulation.multilevel > 0)
-    throw InputError("/simulation/multilevel",
-                     "multilevel releases are the lattice's; the continuum model runs on its "
-                     "graded mesh (set it to 0)");
 }
 
 // The mesher's message "sheet.mesh.max_edge: must be positive" as an InputError at

@@ -151,8 +151,8 @@ RunResult run_on_own_grid(const Scene& scene, const ProgressFn& progress) {
 }  // namespace
 
 RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
-  RunResult r = multilevel_grids(scene).size() > 1 ? run_multilevel(scene, progress)
-                                                   : run_on_own_grid(scene, progress);
+  RunResult r =
+      has_levels(scene) ? run_multilevel(scene, progress) : run_on_own_grid(scene, progress);
   if (scene.simulation.explore > 1 && !r.solve.diverged) explore_branches(scene, r, progress);
   r.warnings = run_warnings(scene);  // once per run, not per grid level or explored release
   return r;

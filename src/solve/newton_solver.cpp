@@ -150,7 +150,11 @@ Eigen::VectorXd Newton::corrected(const Eigen::VectorXd& d, const HessianAssembl
   compute_static_forces(model_, xt, ft);
   ++r_.force_passes;
   Eigen::VectorXd e;
-  if (!ft.allFinite() || !tangent_.correction(x_, h.lower(), gradient(ft), e)) return {};
+  const long factorizations = tangent_.factorizations(), analyses = tangent_.analyses();
+  const bool solved = ft.allFinite() && tangent_.correction(x_, h.lower(), gradient(ft), e);
+  r_.factorizations += tangent_.factorizations() - factorizations;
+  r_.setups += tangent_.analyses() - analyses;
+  if (!solved) return {};
   const double straight = potential_energy(model_, xt);
   const double curved = potential_energy(model_, moved(d, 1.0, e));
   if (!(curved < straight)) return {};

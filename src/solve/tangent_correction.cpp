@@ -3,26 +3,9 @@
 #include <omp.h>
 #include <Eigen/CholmodSupport>
 
+#include "membra/geometry/triangulation.hpp"
+
 namespace membra {
-namespace {
-
-// The unit normal at each particle: the sum of its membrane triangles' area vectors, normalized
-// (z where a particle has none, or they cancel).
-Points vertex_normals(const MembraneTriangles& t, const Points& x) {
-  Points n = Points::Zero(3, x.cols());
-  for (int i = 0; i < t.size(); ++i) {
-    const auto [a, b, c] = t.ids(i);
-    const Vec3 area = (x.col(b) - x.col(a)).cross(x.col(c) - x.col(a));
-    n.col(a) += area, n.col(b) += area, n.col(c) += area;
-  }
-  for (Eigen::Index p = 0; p < n.cols(); ++p) {
-    const double length = n.col(p).norm();
-    n.col(p) = length > 0.0 ? Vec3(n.col(p) / length) : Vec3::UnitZ();
-  }
-  return n;
-}
-
-}  // namespace
 
 struct TangentCorrection::Factor {
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
@@ -32,11 +15,14 @@ struct TangentCorrection::Factor {
 TangentCorrection::~TangentCorrection() = default;
 
 TangentCorrection::TangentCorrection(const Model& model, const std::vector<int>& dof, int ndof)
-    : model_(model),
-      dof_(dof),
+    : dof_(dof),
       ndof_(ndof),
       applies_(model.membrane_triangles.size() > 0),
       factor_(std::make_unique<Factor>()) {
+  for (int i = 0; i < model.membrane_triangles.size(); ++i) {
+    const auto [a, b, c] = model.membrane_triangles.ids(i);
+    triangles_.emplace_back(a, b, c);
+  }
   for (int p = 0; p < model.num_particles(); ++p)
     if (dof[3 * p] >= 0 || dof[3 * p + 1] >= 0 || dof[3 * p + 2] >= 0) movable_.push_back(p);
   factor_->llt.cholmod().print = 0;
@@ -45,7 +31,7 @@ TangentCorrection::TangentCorrection(const Model& model, const std::vector<int>&
 // ndof x 2m: columns 2k and 2k + 1 are two orthonormal tangents at movable particle k, on its
 // free coordinates (every coordinate entered, zeros too, so the pattern does not change).
 Eigen::SparseMatrix<double> TangentCorrection::basis(const Points& x) const {
-  const Points n = vertex_normals(model_.membrane_triangles, x);
+  const Points n = vertex_normals(x, triangles_);
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(6 * movable_.size());
   for (size_t k = 0; k < movable_.size(); ++k) {
@@ -81,8 +67,9 @@ bool TangentCorrection::correction(const Points& x, const Eigen::SparseMatrix<do
   const int levels = omp_get_max_active_levels();  // as in newton_solver.cpp's factorize
   omp_set_max_active_levels(0);
   auto& [llt, analysed] = *factor_;
-  if (a.nonZeros() != analysed) llt.analyzePattern(a), analysed = a.nonZeros();
+  if (a.nonZeros() != analysed) llt.analyzePattern(a), analysed = a.nonZeros(), ++analyses_;
   llt.factorize(a);
+  ++factorizations_;
   omp_set_max_active_levels(levels);
   if (llt.info() != Eigen::Success) return false;
   e = -(b * llt.solve(b.transpose() * g_trial));

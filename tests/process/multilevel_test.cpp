@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -107,6 +108,58 @@ TEST(Multilevel, AFormThatDoesNotSettleFallsBackToThePath) {
   const Points& b = r.prepared.membrane.state.x;
   ASSERT_EQ(a.cols(), b.cols());
   EXPECT_EQ((a - b).cwiseAbs().maxCoeff(), 0.0);
+}
+
+TEST(Multilevel, OnTheContinuumDoublesTheMeshDownToTheCoarsest) {
+  // exp5: a 200 mm sheet, default max_edge 10 mm (its smaller side / 20), 4 elements across.
+  const std::vector<GridLevel> levels = multilevel_meshes(
+      example("exp5_shrink.json", {"model=continuum", "simulation.multilevel=5"}));
+  ASSERT_EQ(levels.size(), 3u);
+  EXPECT_DOUBLE_EQ(levels[0].max_edge, 0.04);
+  EXPECT_DOUBLE_EQ(levels[1].max_edge, 0.02);
+  EXPECT_DOUBLE_EQ(levels[2].max_edge, 0.01);
+  EXPECT_EQ(levels[0].elements_across, 2);
+  EXPECT_EQ(levels[2].elements_across, 4);
+  EXPECT_EQ(multilevel_meshes(example("exp5_shrink.json", {"model=continuum"})).size(), 1u);
+  // A cut as the last step is solved at once and changes the particles: no levels.
+  EXPECT_EQ(
+      multilevel_meshes(example("exp7_cut.json", {"model=continuum", "simulation.multilevel=5"}))
+          .size(),
+      1u);
+  EXPECT_EQ(multilevel_grids(example("exp7_cut.json", {"simulation.multilevel=5"})).size(), 1u);
+  // elements_across is halved to 2 at the least, never raised.
+  const std::vector<GridLevel> one_across =
+      multilevel_meshes(example("exp5_shrink.json", {"model=continuum", "simulation.multilevel=5",
+                                                     "sheet.mesh.elements_across=1"}));
+  ASSERT_EQ(one_across.size(), 3u);
+  EXPECT_EQ(one_across[0].elements_across, 1);
+  // The lattice's grids are not the continuum's levels, and the reverse.
+  EXPECT_EQ(
+      multilevel_grids(example("exp5_shrink.json", {"model=continuum", "simulation.multilevel=5"}))
+          .size(),
+      1u);
+}
+
+// bilayer_roll on the continuum's 20 mm mesh, released from a 40 mm mesh's roll: the same arc as
+// its own path's within 1 %, settled in fewer iterations than the coarse path took.
+TEST(Multilevel, OnTheContinuumACoarserMeshsRollSettlesAsThePathsDoes) {
+  const std::vector<std::string> sets = {"model=continuum", "sheet.mesh.max_edge=20"};
+  const RunResult plain = run_scene(example("bilayer_roll.json", sets));
+  const RunResult r =
+      run_scene(example("bilayer_roll.json", {sets[0], sets[1], "simulation.multilevel=5"}));
+  ASSERT_TRUE(plain.solve.converged && r.solve.converged) << r.solve.message;
+  ASSERT_EQ(r.levels.size(), 2u);  // 200 mm: 5 edges of 40 mm, not 2.5 of 80 mm
+  EXPECT_DOUBLE_EQ(r.levels[0].max_edge, 0.04);
+  EXPECT_GT(r.levels[1].vertices, r.levels[0].vertices);
+  EXPECT_TRUE(r.levels[1].from_coarser);
+  EXPECT_TRUE(r.stability.stable);
+  std::printf(
+      "bilayer_roll, continuum, 20 mm from 40 mm: %.2f mm high (path %.2f mm), %ld + %ld "
+      "iterations (path %ld)\n",
+      r.shape.height * 1e3, plain.shape.height * 1e3, r.levels[0].solve.iterations,
+      r.levels[1].solve.iterations, plain.solve.iterations);
+  EXPECT_NEAR(r.shape.height / plain.shape.height, 1.0, 0.01);
+  EXPECT_LT(r.levels[1].solve.iterations, r.levels[0].solve.iterations);
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 // longer side — and each finer grid starts from the coarser grid's end form (carried over by
 // geometry/grid_prolongation.hpp) with one solve of the step's full change. The path, where the
 // sheet picks its branch, is followed where an iteration is cheap; the fine grid only settles
-// the form's detail near it (docs/solver.md, "Multilevel release").
+// the form's detail near it (docs/solver.md, "Multilevel release"). On the continuum model the
+// levels are meshes of doubled max_edge, carried over by geometry/mesh_prolongation.hpp.
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,9 +25,19 @@ std::vector<std::pair<int, int>> multilevel_grids(const Scene& scene);
 // protocol; no frames and no exploration.
 Scene scene_at_resolution(const Scene& scene, int nx, int ny);
 
-// Runs `scene` through its levels (multilevel_grids). A coarser level that ends unconverged
-// or unstable hands nothing on: the scene's own grid then follows the path itself. The
-// result's `levels` lists every grid's run.
+// The meshes a continuum run of `scene` passes through, coarsest first, its own last: max_edge
+// doubled and elements_across halved (at least 2) per level, while the sheet's longer side holds
+// at least simulation.multilevel - 1 of those edges. A single entry as multilevel_grids says.
+std::vector<GridLevel> multilevel_meshes(const Scene& scene);
+
+// True when a run of `scene` passes through coarser levels: grids (multilevel_grids) on the
+// lattice; on the continuum, meshes of doubled max_edge and halved elements_across (at least 2)
+// while the sheet's longer side holds at least simulation.multilevel - 1 of those edges.
+bool has_levels(const Scene& scene);
+
+// Runs `scene` through its levels (multilevel_grids, or the continuum's meshes). A coarser level
+// that ends unconverged or unstable hands nothing on: the scene's own grid then follows the path
+// itself. The result's `levels` lists every grid's run.
 RunResult run_multilevel(const Scene& scene, const ProgressFn& progress);
 
 // One line for people: "multilevel: 32x32 path, 745 iterations, 15.1 s; 64x64 from 32x32, ...".

@@ -50,7 +50,10 @@ struct Branch;
 // One solve of a grid in a multilevel run (process/multilevel.hpp): its size, how it began and
 // its solves' totals.
 struct GridLevel {
-  int nx = 0, ny = 0;
+  int nx = 0, ny = 0;         // a lattice's grid
+  double max_edge = 0.0;      // m: a continuum level's mesh (0 on a lattice)
+  int elements_across = 0;    // the continuum level's mesh
+  int vertices = 0;           // the continuum level's mesh
   bool from_coarser = false;  // started from the coarser grid's form (else: followed the path)
   SolveReport solve;
 };

@@ -13,6 +13,7 @@
 
 #include <Eigen/SparseCore>
 
+#include "membra/geometry/triangulation.hpp"
 #include "membra/model/model.hpp"
 
 namespace membra {
@@ -32,16 +33,22 @@ class TangentCorrection {
   bool correction(const Points& x, const Eigen::SparseMatrix<double>& lower,
                   const Eigen::VectorXd& g_trial, Eigen::VectorXd& e);
 
+  // Work done so far, for the solve's report: factorizations and symbolic analyses (one per
+  // solve: the restricted matrix's pattern is fixed while the sheet's elements are).
+  long factorizations() const { return factorizations_; }
+  long analyses() const { return analyses_; }
+
  private:
   Eigen::SparseMatrix<double> basis(const Points& x) const;
 
-  const Model& model_;
   const std::vector<int>& dof_;
   int ndof_;
   bool applies_ = false;
-  std::vector<int> movable_;  // particles with at least one free coordinate
-  struct Factor;              // CHOLMOD's, seen only in the source
+  std::vector<int> movable_;         // particles with at least one free coordinate
+  std::vector<Triangle> triangles_;  // the membrane triangles, for the normals
+  struct Factor;                     // CHOLMOD's, seen only in the source
   std::unique_ptr<Factor> factor_;
+  long factorizations_ = 0, analyses_ = 0;
 };
 
 }  // namespace membra
