@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "membra/core/input_error.hpp"
 #include "membra/core/stopwatch.hpp"
 #include "membra/core/units.hpp"
 #include "membra/geometry/grid_prolongation.hpp"
@@ -173,9 +174,22 @@ RunResult run_multilevel(const Scene& scene, const ProgressFn& progress) {
   const Stopwatch clock;
   const GridLevel& coarser = own_levels[own_levels.size() - 2];
   const GridLevel& own = own_levels.back();
-  // The coarser level's run, itself multilevel down to the coarsest.
-  const RunResult coarse =
-      run_scene(scene_at_level(scene, coarser), level_progress(progress, coarser));
+  // The coarser level's run, itself multilevel down to the coarsest. A continuum mesh the mesher
+  // refuses at the coarser size (its narrowest feature is measured along boundaries sampled every
+  // max_edge / 2, so a coarser level can find a sliver the scene's own missed) hands nothing on:
+  // the scene's own mesh follows the path, and the run says why.
+  RunResult coarse;
+  try {
+    coarse = run_scene(scene_at_level(scene, coarser), level_progress(progress, coarser));
+  } catch (const InputError& e) {
+    if (scene.model != SheetModel::continuum) throw;
+    Scene without = scene;
+    without.simulation.multilevel = 0;
+    RunResult r = run_scene(without, progress);
+    r.warnings = {"simulation.multilevel: the coarser level (" + level_name(coarser) +
+                  ") could not be meshed, so the scene's own mesh followed the path: " + e.what()};
+    return r;
+  }
   std::vector<GridLevel> levels = coarse.levels;
   if (levels.empty()) levels.push_back(made(coarser, coarse, false));
   // The budget is the whole run's: the finer grid gets what the coarser left.

@@ -154,7 +154,9 @@ RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
   RunResult r =
       has_levels(scene) ? run_multilevel(scene, progress) : run_on_own_grid(scene, progress);
   if (scene.simulation.explore > 1 && !r.solve.diverged) explore_branches(scene, r, progress);
-  r.warnings = run_warnings(scene);  // once per run, not per grid level or explored release
+  // Once per run, not per grid level or explored release (after a level's own advice, if any).
+  std::vector<std::string> warnings = run_warnings(scene);
+  r.warnings.insert(r.warnings.end(), warnings.begin(), warnings.end());
   return r;
 }
 

@@ -162,5 +162,20 @@ TEST(Multilevel, OnTheContinuumACoarserMeshsRollSettlesAsThePathsDoes) {
   EXPECT_LT(r.levels[1].solve.iterations, r.levels[0].solve.iterations);
 }
 
+// The hyperbola's coarser mesh (20 mm, 2 elements across) is refused by the mesher: a sliver
+// where the pattern meets the sheet's edge, which the 10 mm mesh's sampling of the boundaries
+// does not find. The run then follows the scene's own path (here out of its 3 s budget) and
+// says why, instead of failing.
+TEST(Multilevel, OnTheContinuumAMeshTheMesherRefusesFallsBackToThePath) {
+  const RunResult r = run_scene(
+      example("anticlastic_hyperbola.json",
+              {"model=continuum", "simulation.multilevel=10", "simulation.max_seconds=3"}));
+  EXPECT_TRUE(r.levels.empty());
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.front().find("max_edge 20 mm"), std::string::npos) << r.warnings.front();
+  EXPECT_NE(r.warnings.front().find("narrower than the mesher resolves"), std::string::npos);
+  EXPECT_GT(r.prepared.membrane.sheet.mesh.vertices, 2000);  // the scene's own 10 mm mesh
+}
+
 }  // namespace
 }  // namespace membra
