@@ -20,7 +20,7 @@ std::optional<Points> solve_adjoint(const Model& model, const Points& x, const P
     for (int p = 0; p < n; ++p)
       if (model.pinned(p)) held[3 * p] = held[3 * p + 1] = held[3 * p + 2] = 1;
   } else {
-    gauge = rigid_gauge(x);
+    gauge = free_sheet_gauge(model, x);
     for (int k : gauge.held) held[k] = 1;
   }
   std::vector<int> free_index(held.size(), -1);

@@ -43,10 +43,12 @@ struct Progression {
     return Vec2(stretch.x() * scene.grid.width, stretch.y() * scene.grid.height);
   }
   void check_equilibrium(const std::string& ptr) const {
-    if (scene.simulation.is_static() && !pinned && !framed && gravity != 0.0)
+    if (scene.simulation.is_static() && !pinned && !framed && gravity != 0.0 &&
+        scene.simulation.support == Support::none)
       throw InputError(ptr,
                        "a free sheet under gravity has no static equilibrium: pin it (a load "
-                       "step with pins) or set simulation.G (or the load step's gravity) to 0");
+                       "step with pins), rest it on a table (simulation.support: table) or set "
+                       "simulation.G (or the load step's gravity) to 0");
   }
 };
 

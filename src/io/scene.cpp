@@ -46,6 +46,7 @@ const std::vector<std::string_view> kSimulationKeys = {"solver",
                                                        "multilevel",
                                                        "max_seconds",
                                                        "tangent_correction",
+                                                       "support",
                                                        "ramp_seconds"};
 
 // Largest grid we accept; the robustness issue adds a memory-based limit.
@@ -188,6 +189,13 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
       std::max(sim.tolerance, s.number("path_tolerance", sim.tolerance, Bounds{0.0, 1.0, true}));
   sim.stop_when_converged = s.boolean("stop_when_converged", sim.stop_when_converged);
   sim.tangent_correction = s.boolean("tangent_correction", sim.tangent_correction);
+  sim.support = s.string("support", to_string(sim.support), {"none", "table"}) == "table"
+                    ? Support::table
+                    : Support::none;
+  if (sim.support == Support::table && !(sim.gravity > 0.0))
+    throw InputError(s.pointer("support"),
+                     "a table holds the piece against gravity: set simulation.G above 0 (e.g. "
+                     "9.81 m/s^2)");
   sim.explore = static_cast<int>(s.integer("explore", sim.explore, 1, 1000));
   sim.multilevel = static_cast<int>(s.integer("multilevel", sim.multilevel, 0, kMaxNodesPerSide));
   if (sim.multilevel > 0 && sim.multilevel < 5)
@@ -306,10 +314,10 @@ Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   parse_protocol(top, materials, base_dir, scene);
   parse_output(top, scene.output);
   if (scene.protocol.empty() && scene.simulation.is_static() && scene.pins.empty() &&
-      scene.simulation.gravity != 0.0)
+      scene.simulation.gravity != 0.0 && scene.simulation.support == Support::none)
     throw InputError("/simulation/G",
-                     "a free sheet under gravity has no static equilibrium: add "
-                     "pins or set G to 0");
+                     "a free sheet under gravity has no static equilibrium: add pins, rest it on "
+                     "a table (simulation.support: table) or set G to 0");
   return scene;
 }
 

@@ -182,6 +182,7 @@ json write_simulation(const Scene& scene) {
             {"path_tolerance", s.path_tolerance},
             {"stop_when_converged", s.stop_when_converged},
             {"tangent_correction", s.tangent_correction},
+            {"support", to_string(s.support)},
             {"multilevel", s.multilevel}};
   if (s.ramp_seconds > 0.0) j["ramp_seconds"] = s.ramp_seconds;
   if (scene.sheet.stretch_stiffness) j["K"] = in(*scene.sheet.stretch_stiffness, units::N_per_mm);

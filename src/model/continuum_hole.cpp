@@ -61,6 +61,7 @@ Sheet sheet_without(const Sheet& old, const std::vector<bool>& keep_tri,
   const Rebuild rebuild{old, n, new_of_old};
   nm.for_each_set_with(filtered, [&](auto& set, const auto& from) { set.carry(from, rebuild); });
   lump_masses(n);
+  nm.table.cover(nm.mass);  // the table, if any, takes the new masses
   return n;
 }
 

@@ -24,11 +24,19 @@ std::string mm(double metres) {
   return buf;
 }
 
+}  // namespace
+
+double default_max_edge(double width, double height) {
+  return std::min(width, height) / 20.0;
+}
+
+namespace {
+
 MeshSpec resolved(const ContinuumSpec& s) {
   if (!(s.width > 0.0) || !(s.height > 0.0))
     throw std::invalid_argument("sheet: size must be positive");
   MeshSpec m = s.mesh;
-  if (m.max_edge == 0.0) m.max_edge = std::min(s.width, s.height) / 20.0;
+  if (m.max_edge == 0.0) m.max_edge = default_max_edge(s.width, s.height);
   if (!(m.max_edge > 0.0)) throw std::invalid_argument("sheet.mesh.max_edge: must be positive");
   if (m.elements_across < 1)
     throw std::invalid_argument("sheet.mesh.elements_across: must be at least 1");

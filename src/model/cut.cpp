@@ -138,6 +138,7 @@ int punch_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* where) {
   const Rebuild rebuild{m.sheet, n.sheet, new_of_old};
   n.sheet.model.for_each_set_with(old,
                                   [&](auto& set, const auto& from) { set.carry(from, rebuild); });
+  n.sheet.model.table.cover(n.sheet.model.mass);  // the table, if any, under the rebuilt sheet
   update_elements(n);
   const int removed = old.num_particles() - n.sheet.model.num_particles();
   m = std::move(n);

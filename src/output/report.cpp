@@ -66,6 +66,12 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
   j["triangles"] = r.prepared.membrane.sheet.triangles.size();
   j["pinned"] = r.prepared.pinned;
   report_model(scene, r.prepared.membrane.sheet, j);
+  j["support"] = to_string(scene.simulation.support);
+  if (m.table.size() > 0)
+    j["table"] = {{"touching", r.table.touching},
+                  {"max_depth_mm", r.table.max_depth / units::mm},
+                  {"reaction_N", r.table.reaction},
+                  {"weight_N", r.table.weight}};
   j["stiffness"] = {{"stretch", r.prepared.membrane.sheet.stiffness.stretch / units::N_per_mm},
                     {"shear", r.prepared.membrane.sheet.stiffness.shear / units::N_per_mm},
                     {"flex", r.prepared.membrane.sheet.stiffness.flex / units::N_per_mm}};
@@ -99,10 +105,11 @@ json radius_mm(double k) {
 
 // Energies, shape, curvature, stress of the end state.
 void report_form(const RunResult& r, json& j) {
-  j["energy"] = r.elastic_energy + r.bending_energy + r.gravity_energy;
+  j["energy"] = r.elastic_energy + r.bending_energy + r.gravity_energy + r.support_energy;
   j["energy_parts"] = {{"elastic", r.elastic_energy},
                        {"bending", r.bending_energy},
                        {"gravity", r.gravity_energy},
+                       {"table", r.support_energy},
                        {"kinetic", r.kinetic_energy}};
   j["shape"] = {{"height", r.shape.height / units::mm},
                 {"z_range", r.shape.z_range / units::mm},
@@ -197,19 +204,20 @@ void report_branches(const RunResult& r, json& j) {
   j["branches"] = json::array();
   for (size_t b = 0; b < r.branches.size(); ++b) {
     const RunResult& f = r.branches[b].run;
-    j["branches"].push_back({{"index", b + 1},
-                             {"count", r.branches[b].releases.size()},
-                             {"releases", r.branches[b].releases},
-                             {"height", f.shape.height / units::mm},
-                             {"global_height", f.shape.global_height / units::mm},
-                             {"total_K", f.curvature.total},
-                             {"total_K_global", f.curvature_global.total},
-                             {"classification", f.form_global},
-                             {"quadric", f.shape.quadric.classification},
-                             {"quadric_k1", f.shape.quadric.k1},
-                             {"quadric_k2", f.shape.quadric.k2},
-                             {"energy", f.elastic_energy + f.bending_energy + f.gravity_energy},
-                             {"output", "branches/" + std::to_string(b + 1) + "/"}});
+    j["branches"].push_back(
+        {{"index", b + 1},
+         {"count", r.branches[b].releases.size()},
+         {"releases", r.branches[b].releases},
+         {"height", f.shape.height / units::mm},
+         {"global_height", f.shape.global_height / units::mm},
+         {"total_K", f.curvature.total},
+         {"total_K_global", f.curvature_global.total},
+         {"classification", f.form_global},
+         {"quadric", f.shape.quadric.classification},
+         {"quadric_k1", f.shape.quadric.k1},
+         {"quadric_k2", f.shape.quadric.k2},
+         {"energy", f.elastic_energy + f.bending_energy + f.gravity_energy + f.support_energy},
+         {"output", "branches/" + std::to_string(b + 1) + "/"}});
   }
 }
 
@@ -254,7 +262,11 @@ json form_units() {
       {"mesh.min_angle_deg", "degrees"},
       {"mesh.narrowest_feature_mm", "mm (narrowest resin piece or latex gap, natural sheet)"},
       {"stiffness", "N/mm"},
-      {"energy", "J (elastic + bending + gravitational potential)"},
+      {"support", "text (none: the piece floats; table: it rests on a frictionless table)"},
+      {"table.touching", "particles (resting on the table)"},
+      {"table.max_depth_mm", "mm (the deepest particle's depth in the table's soft contact)"},
+      {"table.reaction_N", "N (the table's push; at rest, the piece's weight_N)"},
+      {"energy", "J (elastic + bending + gravitational potential + the table's contact)"},
       {"energy_parts", "J"},
       {"shape.height", "mm (extent normal to the best-fit plane)"},
       {"shape.z_range", "mm"},

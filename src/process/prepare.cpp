@@ -199,6 +199,12 @@ int pin(const std::vector<PinSpec>& pins, const std::string& where, PreparedScen
 
 namespace {
 
+// A table at the frame's height (z = 0) under every particle, when the scene asks for one.
+void place_support(const Scene& scene, Model& m) {
+  if (scene.simulation.support == Support::table)
+    m.table.rest_on(m.mass, scene.simulation.gravity, 0.0, TableContact::kDefaultSoftness);
+}
+
 // The continuum sheet: its force scale is the lattice's at the mesh's mean edge.
 PreparedScene prepare_continuum(const Scene& scene) {
   PreparedScene p{make_membrane(continuum_sheet(scene)), 0, 0.0, std::nullopt};
@@ -206,6 +212,7 @@ PreparedScene prepare_continuum(const Scene& scene) {
   Model& m = p.membrane.sheet.model;
   m.gravity = Vec3(0.0, 0.0, -scene.simulation.gravity);
   m.velocity_damping = scene.simulation.damping;
+  place_support(scene, m);
   p.force_scale = p.membrane.sheet.stiffness.stretch * p.membrane.sheet.mesh.mean_edge;
   return p;
 }
@@ -224,6 +231,7 @@ PreparedScene prepare_scene(const Scene& scene) {
   Model& m = p.membrane.sheet.model;
   m.gravity = Vec3(0.0, 0.0, -scene.simulation.gravity);
   m.velocity_damping = scene.simulation.damping;
+  place_support(scene, m);
   const LatticeStiffness& k = p.membrane.sheet.stiffness;
   p.force_scale = (k.stretch > 0.0 ? k.stretch : k.shear) * p.membrane.sheet.grid.hx();
   return p;

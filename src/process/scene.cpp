@@ -21,6 +21,10 @@ const char* to_string(SheetModel model) {
   return model == SheetModel::continuum ? "continuum" : "lattice";
 }
 
+const char* to_string(Support support) {
+  return support == Support::table ? "table" : "none";
+}
+
 PatternPtr scene_pattern(const Scene& scene) {
   return union_of_steps(scene, [](const ImpregnateStep&) { return true; });
 }

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include <dlfcn.h>
-#include <omp.h>
 
 #include "membra/model/forces.hpp"
 #include "membra/solve/newton_workspace.hpp"
 #include "membra/solve/rigid_gauge.hpp"
+#include "membra/solve/serial_factorization.hpp"
 #include "membra/solve/tangent_correction.hpp"
 
 namespace membra {
@@ -34,7 +34,7 @@ void single_threaded_blas() {
 
 // Numbers the free coordinates into `dof` (-1: pinned, held by the gauge, or a z coordinate of a
 // plane-stress solve) and returns how many there are.
-int number_dofs(const Model& model, const std::array<int, 6>* gauge, bool in_plane,
+int number_dofs(const Model& model, const std::vector<int>* gauge, bool in_plane,
                 std::vector<int>& dof) {
   const int n = model.num_particles();
   dof.assign(static_cast<size_t>(3 * n), 0);
@@ -163,14 +163,11 @@ Eigen::VectorXd Newton::corrected(const Eigen::VectorXd& d, const HessianAssembl
 }
 
 bool Newton::factorize(const Eigen::SparseMatrix<double>& a) {
-  // Debian's CHOLMOD opens OpenMP regions of a fixed 4 threads inside the supernodal
-  // factorization, whatever OMP_NUM_THREADS says; on 2 cores their sleeping and waking cost 5x
-  // the factorization itself (measured). No active parallel levels make them run on this thread.
-  const int levels = omp_get_max_active_levels();
-  omp_set_max_active_levels(0);
-  if (!analysed_) llt_.analyzePattern(a), analysed_ = true;
-  llt_.factorize(a);
-  omp_set_max_active_levels(levels);
+  {
+    const SerialFactorization serial;
+    if (!analysed_) llt_.analyzePattern(a), analysed_ = true;
+    llt_.factorize(a);
+  }
   ++r_.factorizations;
   return llt_.info() == Eigen::Success;
 }
@@ -414,9 +411,9 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   for (int p = 0; p < n; ++p) any_pinned = any_pinned || model.pinned(p);
   // A free sheet is solved in the gauge's frame (rigid_gauge.hpp) and turned back after.
   const bool gauged = !any_pinned && n >= 3;
-  const RigidGauge gauge = gauged ? rigid_gauge(state.x) : RigidGauge{};
-  Model turned;
-  const bool turn_gravity = gauged && model.gravity != Vec3::Zero();
+  const RigidGauge gauge = gauged ? free_sheet_gauge(model, state.x) : RigidGauge{};
+  Model turned;  // a turn about z (the planar gauge's) leaves gravity and the table as they are
+  const bool turn_gravity = gauged && model.table.size() == 0 && model.gravity != Vec3::Zero();
   if (turn_gravity) turned = model, turned.gravity = gauge.rotation * model.gravity;
   const Model& m = turn_gravity ? turned : model;
   Points x = gauged ? Points(gauge.rotation * state.x) : state.x;

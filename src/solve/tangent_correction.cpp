@@ -1,9 +1,9 @@
 #include "membra/solve/tangent_correction.hpp"
 
-#include <omp.h>
 #include <Eigen/CholmodSupport>
 
 #include "membra/geometry/triangulation.hpp"
+#include "membra/solve/serial_factorization.hpp"
 
 namespace membra {
 
@@ -64,13 +64,13 @@ bool TangentCorrection::correction(const Points& x, const Eigen::SparseMatrix<do
   const Eigen::VectorXd diag = a.diagonal().cwiseAbs();
   const double floor = 1e-12 * (diag.size() ? diag.maxCoeff() : 1.0);
   for (Eigen::Index k = 0; k < a.outerSize(); ++k) a.coeffRef(k, k) += 1e-8 * diag[k] + floor;
-  const int levels = omp_get_max_active_levels();  // as in newton_solver.cpp's factorize
-  omp_set_max_active_levels(0);
   auto& [llt, analysed] = *factor_;
-  if (a.nonZeros() != analysed) llt.analyzePattern(a), analysed = a.nonZeros(), ++analyses_;
-  llt.factorize(a);
+  {
+    const SerialFactorization serial;
+    if (a.nonZeros() != analysed) llt.analyzePattern(a), analysed = a.nonZeros(), ++analyses_;
+    llt.factorize(a);
+  }
   ++factorizations_;
-  omp_set_max_active_levels(levels);
   if (llt.info() != Eigen::Success) return false;
   e = -(b * llt.solve(b.transpose() * g_trial));
   return e.allFinite();

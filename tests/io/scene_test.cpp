@@ -308,6 +308,13 @@ TEST(Scene, ProtocolErrorsNameTheField) {
   j = with_protocol(strip);
   j["simulation"]["G"] = 9.81;  // released, free, under gravity: no static equilibrium
   EXPECT_EQ(error_at(j), "/protocol/2");
+  j["simulation"]["support"] = "table";  // ... unless it rests on a table
+  EXPECT_EQ(error_at(j), "");
+  j["simulation"]["support"] = "floor";
+  EXPECT_EQ(error_at(j), "/simulation/support");
+  j["simulation"]["support"] = "table";
+  j["simulation"]["G"] = 0;  // a table with nothing to press the piece onto it
+  EXPECT_EQ(error_at(j), "/simulation/support");
   j = with_protocol(strip);
   j["protocol"].erase(0);  // release without stretch
   EXPECT_EQ(error_at(j), "/protocol/1");

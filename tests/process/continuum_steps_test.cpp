@@ -165,5 +165,28 @@ TEST(ContinuumSteps, CutsTheMeshCannotTakeAreRefusedByName) {
           "/protocol/1/hole");
 }
 
+// exp5 on a table (docs/model.md, "On a table"), a coarse 20 mm mesh: 0.5 mm latex 200 mm across
+// cannot hold its saddle against its weight (gravity bends it over ~17 mm), so it settles low
+// on the table, which carries its whole weight; the report says so, and the piece is written as
+// it lies (not posed).
+TEST(ContinuumSteps, OnATableTheGrownSheetSettlesUnderItsWeight) {
+  const Scene scene =
+      load_scene(kExampleDir + "exp5_shrink.json",
+                 {"model=continuum", "sheet.mesh.max_edge=20", "protocol.0.increments=5",
+                  "simulation.max_seconds=300", "simulation.support=table", "simulation.G=9.81"});
+  const RunResult r = run_scene(scene);
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  EXPECT_LT(r.shape.global_height, 0.025);  // floating: a saddle of about 50 mm (above)
+  EXPECT_GT(r.table.touching, r.prepared.membrane.sheet.model.num_particles() / 2);
+  EXPECT_NEAR(r.table.reaction, r.table.weight, 1e-3 * r.table.weight);
+  EXPECT_LT(r.table.max_depth, 20 * TableContact::kDefaultSoftness);
+  EXPECT_GT(r.prepared.membrane.state.x.row(2).minCoeff(), -r.table.max_depth - 1e-12);
+  const nlohmann::json j = make_report(scene, r);
+  EXPECT_EQ(j["support"], "table");
+  EXPECT_NEAR(j["table"]["weight_N"].get<double>(), r.table.weight, 1e-12);
+  EXPECT_FALSE(j["pose"]["posed"].get<bool>());
+  EXPECT_GT(j["energy_parts"]["table"].get<double>(), 0.0);
+}
+
 }  // namespace
 }  // namespace membra

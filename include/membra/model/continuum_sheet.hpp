@@ -25,6 +25,9 @@ struct ContinuumSpec {
   Material material = latex();
 };
 
+// The elements' largest edge when the scene gives none: a twentieth of the sheet's smaller side.
+double default_max_edge(double width, double height);
+
 // The mesh a spec asks for, with the size field it was made to. Throws std::invalid_argument
 // naming the mesh setting at fault: a non-positive size, a feature narrower than the mesher can
 // resolve, a mesh too large for memory.

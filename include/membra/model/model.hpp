@@ -11,6 +11,7 @@
 #include "membra/model/elements/membrane_triangles.hpp"
 #include "membra/model/elements/shell_triangles.hpp"
 #include "membra/model/elements/springs.hpp"
+#include "membra/model/elements/table_contact.hpp"
 
 namespace membra {
 
@@ -23,7 +24,8 @@ struct Model {
   Hinges hinges;               // bilayer moments; empty unless resin was applied as a bilayer
   MembraneTriangles membrane_triangles;  // the continuum sheet; empty on a lattice
   ShellTriangles shell_triangles;        // its bending; empty on a lattice
-  Points reference;               // paper position of each particle in the flat natural sheet, m
+  TableContact table;  // the plane the piece rests on; empty unless simulation.support is "table"
+  Points reference;    // paper position of each particle in the flat natural sheet, m
   Vec3 gravity = Vec3::Zero();    // acceleration, m/s^2
   double velocity_damping = 0.0;  // D, 1/s: every particle feels -D m v
 
@@ -38,6 +40,7 @@ struct Model {
     f(hinges);
     f(membrane_triangles);
     f(shell_triangles);
+    f(table);
   }
   template <typename F>
   void for_each_set(F&& f) {
@@ -47,6 +50,7 @@ struct Model {
     f(hinges);
     f(membrane_triangles);
     f(shell_triangles);
+    f(table);
   }
 
   // Calls f(set, other's set of the same kind) for every element set, in the same order.
@@ -58,6 +62,7 @@ struct Model {
     f(hinges, other.hinges);
     f(membrane_triangles, other.membrane_triangles);
     f(shell_triangles, other.shell_triangles);
+    f(table, other.table);
   }
 
   int num_particles() const { return static_cast<int>(mass.size()); }

@@ -65,7 +65,9 @@ struct RunResult {
   double elastic_energy = 0.0;  // J, springs
   double bending_energy = 0.0;  // J, bending elements and bilayer hinges
   double gravity_energy = 0.0;  // J
+  double support_energy = 0.0;  // J, the table's contact (simulation.support)
   double kinetic_energy = 0.0;  // J
+  TableReading table;           // what the table does (simulation.support "table")
   ShapeSummary shape;
   GaussianCurvature curvature;  // densities smoothed on the grid
   std::string form;             // classify_form(curvature)

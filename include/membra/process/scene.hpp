@@ -18,6 +18,11 @@
 
 namespace membra {
 
+// What the piece rests on once the frame lets go (docs/model.md, "On a table"): nothing (it
+// floats), or a frictionless table at the frame's height that holds it against gravity G.
+enum class Support { none, table };
+const char* to_string(Support support);
+
 // How to simulate: the paper's K, G, T, D and the run length.
 struct SimulationSpec {
   Solver solver = Solver::newton;  // solve/solver.hpp has the table
@@ -51,6 +56,7 @@ struct SimulationSpec {
   // Newton on a continuum sheet: curve each step by the tangent correction
   // (solve/tangent_correction.hpp); false: straight steps, for comparison.
   bool tangent_correction = true;
+  Support support = Support::none;
 
   // True for the equilibrium solvers (static, newton), false for time stepping.
   bool is_static() const { return solver_info(solver).equilibrium; }

@@ -6,18 +6,30 @@
 // holding all of a, y and z of b, and z of c leaves every form reachable (rotate it so that b
 // lies on a's x line and c in a's xy plane) and fixes nothing else. Holding b's y and z in the
 // sheet's own axes would forbid ab from shortening unless ab ran along x (docs/solver.md).
-#include <array>
+//
+// A sheet on a table (model/elements/table_contact.hpp) is held up by the plane and gravity: only
+// its motions in the plane are free, a translation in x and y and a turn about z. The planar
+// gauge turns the sheet about z only, so that b lies on a's x line, and holds x and y of a and y
+// of b.
+#include <vector>
 
 #include "membra/core/vec.hpp"
+#include "membra/model/model.hpp"
 
 namespace membra {
 
 struct RigidGauge {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // sheet axes -> gauge frame
-  std::array<int, 6> held{};  // coordinate numbers 3 p + c (in the gauge frame) to hold
+  std::vector<int> held;  // coordinate numbers 3 p + c (in the gauge frame) to hold
 };
 
 // The gauge for positions x (at least three particles, not all on one line).
 RigidGauge rigid_gauge(const Points& x);
+
+// The planar gauge for positions x (at least two particles, not one above the other).
+RigidGauge planar_gauge(const Points& x);
+
+// The gauge a sheet that no pin holds takes: the planar one on a table, else the rigid one.
+RigidGauge free_sheet_gauge(const Model& model, const Points& x);
 
 }  // namespace membra

@@ -17,8 +17,9 @@
 
 namespace membra {
 
-// Which energy an element stores, for the report's split (stretching or bending).
-enum class EnergyKind { stretching, bending };
+// Which energy an element stores, for the report's split (stretching or bending; a support's
+// contact is neither).
+enum class EnergyKind { stretching, bending, support };
 
 // Where the release stands: latex rest lengths move from their frame length (level 1) to their
 // natural length (level 0) once the release has begun (docs/process.md).
