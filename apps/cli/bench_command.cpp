@@ -2,12 +2,15 @@
 
 #include <omp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 
 #include "membra/core/input_error.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/model/continuum_sheet.hpp"
 #include "membra/output/bench_report.hpp"
 #include "membra/process/bench.hpp"
 #include "membra/process/scene_bench.hpp"
@@ -40,7 +43,35 @@ void print_table(const std::vector<BenchRow>& rows, const BenchOptions& o) {
                 r.report.diverged ? "  DIVERGED" : (r.report.converged ? "" : "  (budget)"));
 }
 
-// Every scene file at every size with every solver, one line logged per run.
+// The --set overrides of each run of a scene file: the lattice at every size, the continuum on
+// its default mesh at every scale (max_edge times it, elements_across over it).
+std::vector<std::vector<std::string>> scene_variants(const BenchArgs& args,
+                                                     const std::string& file) {
+  std::vector<std::vector<std::string>> out;
+  for (const std::string& model : args.scene_models) {
+    if (model == "lattice") {
+      for (int n : args.scene_sizes)
+        out.push_back({"model=lattice",
+                       "sheet.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]"});
+    } else if (model == "continuum") {
+      const Scene own = load_scene(file, {"model=continuum"});
+      const double edge = own.mesh.max_edge > 0.0
+                              ? own.mesh.max_edge
+                              : default_max_edge(own.grid.width, own.grid.height);
+      for (double scale : args.scene_mesh_scales) {
+        const long across = std::max(1L, std::lround(own.mesh.elements_across / scale));
+        out.push_back({"model=continuum",
+                       "sheet.mesh.max_edge=" + std::to_string(edge * scale * 1e3),
+                       "sheet.mesh.elements_across=" + std::to_string(across)});
+      }
+    } else {
+      throw InputError("--scene-models", "'" + model + "' is no model (lattice, continuum)");
+    }
+  }
+  return out;
+}
+
+// Every scene file on every model, size and mesh with every solver, one line logged per run.
 std::vector<SceneBenchRow> run_scene_bench(const BenchArgs& args) {
   std::vector<Solver> solvers;
   for (const std::string& name : args.scene_solvers) {
@@ -51,34 +82,57 @@ std::vector<SceneBenchRow> run_scene_bench(const BenchArgs& args) {
   }
   std::vector<SceneBenchRow> rows;
   for (const std::string& file : args.scene_files)
-    for (int n : args.scene_sizes) {
-      const std::string res =
-          "sheet.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]";
+    for (std::vector<std::string> sets : scene_variants(args, file))
       for (int levels : args.scene_multilevel) {
-        const Scene scene =
-            load_scene(file, {res, "simulation.multilevel=" + std::to_string(levels)});
+        sets.push_back("simulation.multilevel=" + std::to_string(levels));
+        const Scene scene = load_scene(file, sets);
+        sets.pop_back();
         for (Solver solver : solvers) {
           rows.push_back(bench_scene(scene, solver, args.budget));
           const SceneBenchRow& r = rows.back();
           if (!args.quiet)
-            std::cerr << r.scene << " " << n << " " << r.solver << ": " << r.report.wall_seconds
-                      << " s" << (r.over_budget ? " (budget)" : "") << "\n";
+            std::cerr << r.scene << " " << r.model << " " << r.vertices << " vertices " << r.solver
+                      << ": " << r.report.wall_seconds << " s" << (r.over_budget ? " (budget)" : "")
+                      << "\n";
         }
       }
-    }
   return rows;
 }
 
 void print_scene_table(const std::vector<SceneBenchRow>& rows, double budget) {
   std::printf("\nscenes, full runs, budget %.0f s per run\n", budget);
-  std::printf("%-22s %5s %-12s %8s %8s %7s %5s %6s %9s %10s %7s\n", "scene", "n", "solver",
-              "wall s", "iters", "factor", "incr", "conv", "resid", "height mm", "total K");
-  for (const auto& r : rows)
-    std::printf("%-22s %5d %-12s %8.2f %8ld %7ld %5d %6s %9.1e %10.2f %7.3f%s\n", r.scene.c_str(),
-                r.n, r.solver.c_str(), r.report.wall_seconds, r.report.iterations,
-                r.report.factorizations, r.increments, r.report.converged ? "yes" : "no",
-                r.report.residual_relative, r.height * 1e3, r.total_curvature,
+  std::printf("%-22s %-9s %9s %-12s %8s %8s %7s %5s %6s %9s %10s %8s %-12s\n", "scene", "model",
+              "mesh", "solver", "wall s", "iters", "factor", "incr", "conv", "resid", "height mm",
+              "total K", "global form");
+  for (const auto& r : rows) {
+    char mesh[32];
+    if (r.max_edge > 0.0)
+      std::snprintf(mesh, sizeof mesh, "%.3g/%d", r.max_edge * 1e3, r.elements_across);
+    else
+      std::snprintf(mesh, sizeof mesh, "%d^2", r.n);
+    std::printf("%-22s %-9s %9s %-12s %8.2f %8ld %7ld %5d %6s %9.1e %10.2f %8.3f %-12s%s\n",
+                r.scene.c_str(), r.model.c_str(), mesh, r.solver.c_str(), r.report.wall_seconds,
+                r.report.iterations, r.report.factorizations, r.increments,
+                r.report.converged ? "yes" : "no", r.report.residual_relative, r.form.height * 1e3,
+                r.form.total_curvature, r.form.classification.c_str(),
                 r.over_budget ? "  (budget)" : (r.stable ? "" : "  (saddle)"));
+  }
+}
+
+// The cost's growth with vertices and the continuum's mesh-convergence checks.
+void print_scene_summary(const std::vector<SceneBenchSummary>& summaries) {
+  std::printf("\n%-22s %-9s %-12s %s\n", "scene", "model", "solver",
+              "wall ~ vertices^p; mesh convergence (max_edge against half)");
+  for (const auto& s : summaries) {
+    std::printf("%-22s %-9s %-12s ", s.scene.c_str(), s.model.c_str(), s.solver.c_str());
+    if (s.runs >= 2)
+      std::printf("p = %.2f (%d runs)", s.cost_exponent, s.runs);
+    else
+      std::printf("p: fewer than two converged runs");
+    for (const auto& c : s.checks)
+      std::printf("; %.3g mm: %s", c.max_edge * 1e3, c.result.line().c_str());
+    std::printf("\n");
+  }
 }
 
 }  // namespace
@@ -94,7 +148,10 @@ int cmd_bench(const BenchArgs& args) {
       args.scenes ? run_scene_bench(args) : std::vector<SceneBenchRow>{};
   if (args.json || !args.json_out.empty()) {
     nlohmann::json j = bench_report(rows, o, omp_get_max_threads());
-    if (args.scenes) j["scenes"] = scene_bench_report(scene_rows);
+    if (args.scenes) {
+      j["scenes"] = scene_bench_report(scene_rows);
+      j["scene_summary"] = scene_summary_report(summarize_scene_bench(scene_rows));
+    }
     if (!args.json_out.empty()) {
       std::ofstream out(args.json_out);
       out << j.dump(2) << "\n";
@@ -109,7 +166,10 @@ int cmd_bench(const BenchArgs& args) {
     }
   }
   print_table(rows, o);
-  if (args.scenes) print_scene_table(scene_rows, args.budget);
+  if (args.scenes) {
+    print_scene_table(scene_rows, args.budget);
+    print_scene_summary(summarize_scene_bench(scene_rows));
+  }
   return 0;
 }
 

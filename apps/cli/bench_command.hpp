@@ -20,9 +20,13 @@ struct BenchArgs {
   std::vector<std::string> scene_solvers{"static", "newton"};
   // simulation.multilevel for the scene runs: each value a run of its own (0: one grid).
   std::vector<int> scene_multilevel{0};
-  std::vector<std::string> scene_files{"examples/exp3_parallel.json",
-                                       "examples/synclastic_ellipse.json",
-                                       "examples/anticlastic_hyperbola.json"};
+  std::vector<std::string> scene_files{
+      "examples/exp3_parallel.json", "examples/synclastic_ellipse.json",
+      "examples/anticlastic_hyperbola.json", "examples/exp5_shrink.json"};
+  // The models the scenes run on: the lattice at scene_sizes, the continuum on its default mesh
+  // scaled by each of scene_mesh_scales (max_edge times it, elements_across over it).
+  std::vector<std::string> scene_models{"lattice", "continuum"};
+  std::vector<double> scene_mesh_scales{1.0, 0.5};
 };
 
 int cmd_bench(const BenchArgs& args);

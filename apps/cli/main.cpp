@@ -209,7 +209,8 @@ CLI::App* add_bench(CLI::App& app, Args& a) {
   bench->add_flag("--quiet,-q", a.bench.quiet, "No per-run log on stderr");
   bench->add_flag("--scenes", a.bench.scenes,
                   "Also run the forward examples (exp3_parallel, synclastic_ellipse, "
-                  "anticlastic_hyperbola; from the repository root) with each equilibrium solver");
+                  "anticlastic_hyperbola, exp5_shrink; from the repository root) on both models "
+                  "with each equilibrium solver");
   bench->add_option("--scene-sizes", a.bench.scene_sizes, "Resolutions n of the scenes (n x n)")
       ->delimiter(',')
       ->check(CLI::Range(3, 4096))
@@ -224,7 +225,22 @@ CLI::App* add_bench(CLI::App& app, Args& a) {
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   bench->add_option("--scene-files", a.bench.scene_files, "Scene files for --scenes")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->capture_default_str();
+  bench
+      ->add_option("--scene-models", a.bench.scene_models,
+                   "Models for the scenes: lattice (at --scene-sizes), continuum (on meshes "
+                   "scaled by --scene-mesh-scales)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"lattice", "continuum"}))
+      ->capture_default_str();
+  bench
+      ->add_option("--scene-mesh-scales", a.bench.scene_mesh_scales,
+                   "Continuum meshes: the default max_edge times each (elements_across over "
+                   "it); 1,0.5 is the mesh-convergence check")
+      ->delimiter(',')
+      ->check(CLI::Range(0.05, 20.0))
+      ->capture_default_str();
   return bench;
 }
 

@@ -42,7 +42,15 @@ nlohmann::json scene_bench_report(const std::vector<SceneBenchRow>& rows) {
   nlohmann::json a = nlohmann::json::array();
   for (const auto& r : rows)
     a.push_back({{"scene", r.scene},
+                 {"model", r.model},
                  {"n", r.n},
+                 {"max_edge_mm", r.max_edge * 1e3},
+                 {"elements_across", r.elements_across},
+                 {"vertices", r.vertices},
+                 {"classification", r.form.classification},
+                 {"global_height_mm", r.form.height * 1e3},
+                 {"global_total_K", r.form.total_curvature},
+                 {"energy", r.form.energy},
                  {"solver", r.solver},
                  {"converged", r.report.converged},
                  {"over_budget", r.over_budget},
@@ -56,6 +64,27 @@ nlohmann::json scene_bench_report(const std::vector<SceneBenchRow>& rows) {
                  {"residual_relative", r.report.residual_relative},
                  {"height_mm", r.height * 1e3},
                  {"total_curvature_rad", r.total_curvature}});
+  return a;
+}
+
+nlohmann::json scene_summary_report(const std::vector<SceneBenchSummary>& summaries) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& s : summaries) {
+    nlohmann::json checks = nlohmann::json::array();
+    for (const auto& c : s.checks)
+      checks.push_back({{"max_edge_mm", c.max_edge * 1e3},
+                        {"same_classification", c.result.same_classification},
+                        {"curvature_change", c.result.curvature_change},
+                        {"height_change", c.result.height_change},
+                        {"energy_change", c.result.energy_change},
+                        {"passes", c.result.passes()}});
+    a.push_back({{"scene", s.scene},
+                 {"model", s.model},
+                 {"solver", s.solver},
+                 {"cost_exponent", s.cost_exponent},
+                 {"runs", s.runs},
+                 {"mesh_convergence", checks}});
+  }
   return a;
 }
 

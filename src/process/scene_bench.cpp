@@ -1,5 +1,6 @@
 #include "membra/process/scene_bench.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <variant>
 
@@ -30,6 +31,7 @@ SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
   scene.simulation.solver = solver;
   SceneBenchRow row;
   row.scene = scene.name;
+  row.model = to_string(scene.model);
   row.n = scene.grid.nx;
   row.solver = std::string(solver_name(solver));
   if (scene.simulation.multilevel > 0)  // "newton/ml32": multilevel down to 32 nodes
@@ -49,12 +51,59 @@ SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
     row.height = r.shape.height;
     row.total_curvature = r.curvature.total;
     row.stable = r.stability.checked && r.stability.stable;
+    const Sheet& sheet = r.prepared.membrane.sheet;
+    row.vertices = sheet.model.num_particles();
+    if (sheet.continuum()) {
+      row.max_edge = sheet.mesh.spec.max_edge;
+      row.elements_across = sheet.mesh.spec.elements_across;
+    }
+    row.form = {r.form_global, r.curvature_global.total, r.shape.global_height,
+                r.elastic_energy + r.bending_energy + r.gravity_energy + r.support_energy};
   } catch (const OverBudget&) {
     row.over_budget = true;
     row.report.converged = false;
   }
   row.report.wall_seconds = clock.seconds();
   return row;
+}
+
+namespace {
+
+void summarize_group(const std::vector<const SceneBenchRow*>& group, SceneBenchSummary& out) {
+  std::vector<int> vertices;
+  std::vector<double> wall;
+  for (const SceneBenchRow* r : group) {
+    if (!r->report.converged) continue;
+    vertices.push_back(r->vertices);
+    wall.push_back(r->report.wall_seconds);
+    for (const SceneBenchRow* f : group)
+      if (r->max_edge > 0.0 && f->report.converged &&
+          std::abs(f->max_edge - 0.5 * r->max_edge) <= 1e-9 * r->max_edge)
+        out.checks.push_back({r->max_edge, compare_meshes(r->form, f->form)});
+  }
+  out.runs = static_cast<int>(vertices.size());
+  out.cost_exponent = cost_exponent(vertices, wall);
+}
+
+}  // namespace
+
+std::vector<SceneBenchSummary> summarize_scene_bench(const std::vector<SceneBenchRow>& rows) {
+  std::vector<SceneBenchSummary> out;
+  std::vector<bool> done(rows.size(), false);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (done[i]) continue;
+    const SceneBenchRow& a = rows[i];
+    std::vector<const SceneBenchRow*> group;
+    for (size_t k = i; k < rows.size(); ++k)
+      if (!done[k] && rows[k].scene == a.scene && rows[k].model == a.model &&
+          rows[k].solver == a.solver)
+        group.push_back(&rows[k]), done[k] = true;
+    SceneBenchSummary s;
+    s.scene = a.scene, s.model = a.model, s.solver = a.solver;
+    summarize_group(group, s);
+    out.push_back(std::move(s));
+  }
+  return out;
 }
 
 }  // namespace membra

@@ -283,7 +283,7 @@ TEST_F(Cli, MultilevelReportsEveryGrid) {
 
   const fs::path out = dir / "bench.json";
   const Output b = membra_cli(
-      "bench --sizes 8 --solvers static --scenes --scene-sizes 21 "
+      "bench --sizes 8 --solvers static --scenes --scene-models lattice --scene-sizes 21 "
       "--scene-solvers newton --scene-multilevel 0,11 --scene-files " +
       scene + " --budget 120 -q --json-out " + out.string());
   ASSERT_EQ(b.code, 0) << b.text;
@@ -303,7 +303,7 @@ TEST(CliBench, ScenesRunTheExamplesWithEachEquilibriumSolver) {
   fs::create_directories(dir);
   const fs::path out = dir / "bench.json";
   const Output o = membra_cli(
-      "bench --sizes 8 --solvers static --scenes --scene-sizes 11 "
+      "bench --sizes 8 --solvers static --scenes --scene-models lattice --scene-sizes 11 "
       "--scene-files " +
       std::string(MEMBRA_SOURCE_DIR) +
       "/examples/anticlastic_hyperbola.json --budget 120 -q --json-out " + out.string());
@@ -327,6 +327,49 @@ TEST(CliBench, ScenesRunTheExamplesWithEachEquilibriumSolver) {
   const Output bad = membra_cli("bench --sizes 8 --solvers static --scenes --scene-solvers rk4");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.text.find("no equilibrium solver"), std::string::npos) << bad.text;
+}
+
+// --scenes on the continuum: exp5 on its default mesh coarsened 4x and 2x (40 and 20 mm,
+// elements_across 1 and 2), the rows saying model, mesh and vertices, and the summary the cost's
+// exponent and the mesh-convergence check of the 40 mm mesh against the 20 mm one.
+TEST(CliBench, ScenesOnTheContinuumCheckMeshConvergence) {
+  const fs::path dir = unique_temp_dir();
+  fs::create_directories(dir);
+  const fs::path out = dir / "bench.json";
+  const Output o = membra_cli(
+      "bench --sizes 8 --solvers static --scenes --scene-models continuum "
+      "--scene-mesh-scales 4,2 --scene-solvers newton --scene-files " +
+      std::string(MEMBRA_SOURCE_DIR) + "/examples/exp5_shrink.json --budget 300 -q --json-out " +
+      out.string());
+  ASSERT_EQ(o.code, 0) << o.text;
+  EXPECT_NE(o.text.find("mesh convergence"), std::string::npos) << o.text;
+  std::ifstream in(out);
+  const json j = json::parse(in);
+  const json& rows = j["scenes"];
+  ASSERT_EQ(rows.size(), 2u) << j.dump();
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(rows[k]["model"], "continuum");
+    EXPECT_NEAR(rows[k]["max_edge_mm"].get<double>(), k == 0 ? 40.0 : 20.0, 1e-6);
+    EXPECT_EQ(rows[k]["elements_across"], k == 0 ? 1 : 2);
+    EXPECT_TRUE(rows[k]["converged"].get<bool>()) << rows[k].dump();
+    EXPECT_EQ(rows[k]["classification"], "anticlastic") << rows[k].dump();
+  }
+  EXPECT_GT(rows[1]["vertices"].get<int>(), 2 * rows[0]["vertices"].get<int>());
+  const json& summary = j["scene_summary"];
+  ASSERT_EQ(summary.size(), 1u) << summary.dump();
+  EXPECT_EQ(summary[0]["runs"], 2);
+  EXPECT_GT(summary[0]["cost_exponent"].get<double>(), 0.0);
+  const json& check = summary[0]["mesh_convergence"];
+  ASSERT_EQ(check.size(), 1u) << summary.dump();
+  EXPECT_NEAR(check[0]["max_edge_mm"].get<double>(), 40.0, 1e-6);
+  EXPECT_TRUE(check[0]["same_classification"].get<bool>());
+  const double dk = check[0]["curvature_change"].get<double>();
+  const double k0 = rows[0]["global_total_K"].get<double>();
+  const double k1 = rows[1]["global_total_K"].get<double>();
+  EXPECT_NEAR(dk, std::abs(k1 - k0) / std::abs(k1), 1e-9);
+  fs::remove_all(dir);
+  const Output bad = membra_cli("bench --sizes 8 --solvers static --scenes --scene-models grid");
+  EXPECT_EQ(bad.code, 2);
 }
 
 // A run that stops before its equilibrium writes every output but exits 7 and says what to try.

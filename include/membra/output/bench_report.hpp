@@ -19,5 +19,9 @@ nlohmann::json bench_report(const std::vector<BenchRow>& rows, const BenchOption
 // `membra bench --scenes`: the scene runs as a JSON array (the "scenes" key of the report), with
 // units in the key names.
 nlohmann::json scene_bench_report(const std::vector<SceneBenchRow>& rows);
+// Per scene, model and solver: "cost_exponent" (wall ~ vertices^p), "runs" it was fitted to, and
+// "mesh_convergence" (each check's coarser "max_edge_mm", "same_classification",
+// "curvature_change", "height_change", "energy_change" as fractions, and "passes").
+nlohmann::json scene_summary_report(const std::vector<SceneBenchSummary>& summaries);
 
 }  // namespace membra
