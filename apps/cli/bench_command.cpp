@@ -44,7 +44,8 @@ void print_table(const std::vector<BenchRow>& rows, const BenchOptions& o) {
 }
 
 // The --set overrides of each run of a scene file: the lattice at every size, the continuum on
-// its default mesh at every scale (max_edge times it, elements_across over it).
+// its default mesh at every scale (max_edge and the chord tolerance times it, elements_across
+// over it).
 std::vector<std::vector<std::string>> scene_variants(const BenchArgs& args,
                                                      const std::string& file) {
   std::vector<std::vector<std::string>> out;
@@ -60,9 +61,13 @@ std::vector<std::vector<std::string>> scene_variants(const BenchArgs& args,
                               : default_max_edge(own.grid.width, own.grid.height);
       for (double scale : args.scene_mesh_scales) {
         const long across = std::max(1L, std::lround(own.mesh.elements_across / scale));
+        // The chords of curved outlines scale too: a half-size mesh of a 1 mm sliver needs
+        // elements that the default chord tolerance calls too small (continuum_sheet.cpp).
         out.push_back({"model=continuum",
                        "sheet.mesh.max_edge=" + std::to_string(edge * scale * 1e3),
-                       "sheet.mesh.elements_across=" + std::to_string(across)});
+                       "sheet.mesh.elements_across=" + std::to_string(across),
+                       "sheet.mesh.tolerance=" +
+                           std::to_string(std::min(1.0, own.mesh.tolerance * scale * 1e3))});
       }
     } else {
       throw InputError("--scene-models", "'" + model + "' is no model (lattice, continuum)");
@@ -93,7 +98,7 @@ std::vector<SceneBenchRow> run_scene_bench(const BenchArgs& args) {
           if (!args.quiet)
             std::cerr << r.scene << " " << r.model << " " << r.vertices << " vertices " << r.solver
                       << ": " << r.report.wall_seconds << " s" << (r.over_budget ? " (budget)" : "")
-                      << "\n";
+                      << (r.error.empty() ? "" : " (error: " + r.error + ")") << "\n";
         }
       }
   return rows;
@@ -115,7 +120,10 @@ void print_scene_table(const std::vector<SceneBenchRow>& rows, double budget) {
                 r.report.iterations, r.report.factorizations, r.increments,
                 r.report.converged ? "yes" : "no", r.report.residual_relative, r.form.height * 1e3,
                 r.form.total_curvature, r.form.classification.c_str(),
-                r.over_budget ? "  (budget)" : (r.stable ? "" : "  (saddle)"));
+                r.over_budget      ? "  (budget)"
+                : !r.error.empty() ? ("  (error: " + r.error + ")").c_str()
+                : r.stable         ? ""
+                                   : "  (saddle)");
   }
 }
 

@@ -54,6 +54,7 @@ nlohmann::json scene_bench_report(const std::vector<SceneBenchRow>& rows) {
                  {"solver", r.solver},
                  {"converged", r.report.converged},
                  {"over_budget", r.over_budget},
+                 {"error", r.error},
                  {"stable", r.stable},
                  {"wall_seconds", r.report.wall_seconds},
                  {"iterations", r.report.iterations},

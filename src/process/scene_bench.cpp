@@ -25,6 +25,14 @@ int path_increments(const Scene& scene) {
   return n;
 }
 
+// The sheet's size, and the continuum's mesh as asked for.
+void read_sheet(const Sheet& sheet, SceneBenchRow& row) {
+  row.vertices = sheet.model.num_particles();
+  if (!sheet.continuum()) return;
+  row.max_edge = sheet.mesh.spec.max_edge;
+  row.elements_across = sheet.mesh.spec.elements_across;
+}
+
 }  // namespace
 
 SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
@@ -51,19 +59,20 @@ SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
     row.height = r.shape.height;
     row.total_curvature = r.curvature.total;
     row.stable = r.stability.checked && r.stability.stable;
-    const Sheet& sheet = r.prepared.membrane.sheet;
-    row.vertices = sheet.model.num_particles();
-    if (sheet.continuum()) {
-      row.max_edge = sheet.mesh.spec.max_edge;
-      row.elements_across = sheet.mesh.spec.elements_across;
-    }
+    read_sheet(r.prepared.membrane.sheet, row);
     row.form = {r.form_global, r.curvature_global.total, r.shape.global_height,
                 r.elastic_energy + r.bending_energy + r.gravity_energy + r.support_energy};
   } catch (const OverBudget&) {
     row.over_budget = true;
     row.report.converged = false;
+  } catch (const std::exception& e) {
+    // One scene the model cannot take (a mesh it cannot make) does not end the bench.
+    row.error = e.what();
+    row.report.converged = false;
   }
   row.report.wall_seconds = clock.seconds();
+  // A run stopped by the budget still says how large its sheet was (prepared again, untimed).
+  if (row.over_budget) read_sheet(prepare_scene(scene).membrane.sheet, row);
   return row;
 }
 

@@ -26,6 +26,7 @@ struct SceneBenchRow {
   bool stable = false;           // the stability check of the end state
   FormReading form;              // the global form, for the mesh-convergence check
   bool over_budget = false;      // stopped by the budget (report.converged is false)
+  std::string error;             // why the run failed (e.g. a mesh the mesher cannot make)
 };
 
 // Runs `scene` (already at its resolution) with `solver` until done or `budget` seconds.

@@ -26,7 +26,7 @@ struct AddSpringsSpec {
   double rest_factor = 1.0;  // rest length / current length (> 0)
 };
 
-struct AddedSprings {
+struct AddedSprings : NoResinRule {
   static constexpr int kArity = 2;
   static constexpr std::string_view kName = "added springs";
   static constexpr EnergyKind kEnergy = EnergyKind::stretching;
@@ -64,13 +64,7 @@ struct AddedSprings {
   // Strain and force; no stress of the sheet's (no tributary width).
   ElementStress stress(int i, const Points& x, double thickness) const;
 
-  // No composite rule, no resin: they keep what they were given.
-  void update(const ReleaseLevel&) {}
-  void begin_release(const Points&) {}
-  int impregnate(const Impregnation&) { return 0; }
-  ResinFootprint footprint(int, const Points&) const { return {}; }
-  void set_resin_fraction(int, double, const ReleaseLevel&) {}
-  double resin_rate(int, const Points&, const Points&, const ReleaseLevel&) const { return 0.0; }
+  // No composite rule, no resin (NoResinRule): they keep what they were given.
 
   // Growth rule: a growth of the "added" family, or of every element, scales their rest length
   // by its ratio along them, as the lattice's latex.

@@ -74,6 +74,17 @@ struct LocalGrowth {
   }
 };
 
+// The composite and resin rules of a kind that is not part of the sheet (added springs, the
+// table): nothing to update with the release, no resin, no place in the design's resin maps.
+struct NoResinRule {
+  void update(const ReleaseLevel&) {}
+  void begin_release(const Points&) {}
+  int impregnate(const Impregnation&) { return 0; }
+  ResinFootprint footprint(int, const Points&) const { return {}; }
+  void set_resin_fraction(int, double, const ReleaseLevel&) {}
+  double resin_rate(int, const Points&, const Points&, const ReleaseLevel&) const { return 0.0; }
+};
+
 // Where the latex grows, and how: each set asks it for the growth of each of its elements.
 class GrowthField {
  public:

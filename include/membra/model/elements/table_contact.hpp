@@ -23,7 +23,7 @@ struct TableReading {
   double weight = 0.0;
 };
 
-struct TableContact {
+struct TableContact : NoResinRule {
   static constexpr int kArity = 1;
   static constexpr std::string_view kName = "table";
   static constexpr EnergyKind kEnergy = EnergyKind::support;
@@ -63,13 +63,7 @@ struct TableContact {
   // The plane carries no stress of the sheet's.
   ElementStress stress(int, const Points&, double) const { return {}; }
 
-  // No composite rule, no resin, no growth: the table is not part of the sheet.
-  void update(const ReleaseLevel&) {}
-  void begin_release(const Points&) {}
-  int impregnate(const Impregnation&) { return 0; }
-  ResinFootprint footprint(int, const Points&) const { return {}; }
-  void set_resin_fraction(int, double, const ReleaseLevel&) {}
-  double resin_rate(int, const Points&, const Points&, const ReleaseLevel&) const { return 0.0; }
+  // No composite rule, no resin (NoResinRule), no growth: the table is not part of the sheet.
   std::vector<LocalGrowth> growth(const GrowthField&, const Points&) const { return {}; }
   void grow(const std::vector<LocalGrowth>&, const Points&, double, const ReleaseLevel&) {}
   // Cut rule: a cut severs no contact; a rebuilt sheet's surviving particles keep theirs.
