@@ -43,6 +43,13 @@ void print_table(const std::vector<BenchRow>& rows, const BenchOptions& o) {
                 r.report.diverged ? "  DIVERGED" : (r.report.converged ? "" : "  (budget)"));
 }
 
+// A number in full ("6.666666666666667"), so that a mesh and its half compare exactly.
+std::string exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
 // The --set overrides of each run of a scene file: the lattice at every size, the continuum on
 // its default mesh at every scale (max_edge and the chord tolerance times it, elements_across
 // over it).
@@ -60,14 +67,14 @@ std::vector<std::vector<std::string>> scene_variants(const BenchArgs& args,
                               ? own.mesh.max_edge
                               : default_max_edge(own.grid.width, own.grid.height);
       for (double scale : args.scene_mesh_scales) {
-        const long across = std::max(1L, std::lround(own.mesh.elements_across / scale));
+        // Within what a scene accepts (src/io/scene.cpp), so a small scale cannot end the bench.
+        const long across = std::clamp(std::lround(own.mesh.elements_across / scale), 1L, 64L);
         // The chords of curved outlines scale too: a half-size mesh of a 1 mm sliver needs
         // elements that the default chord tolerance calls too small (continuum_sheet.cpp).
-        out.push_back({"model=continuum",
-                       "sheet.mesh.max_edge=" + std::to_string(edge * scale * 1e3),
+        out.push_back({"model=continuum", "sheet.mesh.max_edge=" + exact(edge * scale * 1e3),
                        "sheet.mesh.elements_across=" + std::to_string(across),
                        "sheet.mesh.tolerance=" +
-                           std::to_string(std::min(1.0, own.mesh.tolerance * scale * 1e3))});
+                           exact(std::clamp(own.mesh.tolerance * scale * 1e3, 1e-4, 1.0))});
       }
     } else {
       throw InputError("--scene-models", "'" + model + "' is no model (lattice, continuum)");

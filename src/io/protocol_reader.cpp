@@ -311,6 +311,10 @@ CutStep read_cut(const JsonObject& o, const Progression& at) {
 LoadStep read_load(const JsonObject& o, Progression& at) {
   LoadStep s;
   if (o.has("gravity")) s.gravity = o.number("gravity", std::nullopt, Bounds::between(-1e4, 1e4));
+  if (s.gravity && !(*s.gravity > 0.0) && at.scene.simulation.support == Support::table)
+    throw InputError(o.pointer("gravity"),
+                     "the piece rests on a table (simulation.support), which holds it only "
+                     "against gravity above 0");
   if (s.gravity) at.gravity = *s.gravity;
   parse_pins(o, at.scene, s.pins);
   at.pinned = at.pinned || !s.pins.empty();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 #include "membra/model/continuum_sheet.hpp"
@@ -25,11 +26,13 @@ std::vector<bool> triangles_kept(const Membrane& m, const Pattern& hole) {
 }
 
 // The sheet's particles, triangles and element sets without what the hole removed. The
-// continuum's triangle sets hold one element per triangle of the sheet, in its order.
+// continuum's triangle sets hold one element per triangle of the sheet, in its order; the table,
+// one per particle, is carried over by its particles (and covers the new sheet after).
 Sheet sheet_without(const Sheet& old, const std::vector<bool>& keep_tri,
                     std::vector<int>& new_of_old) {
   Model filtered = old.model;
   filtered.for_each_set([&](auto& set) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(set)>, TableContact>) return;
     if (set.size() == 0) return;
     if (set.size() != static_cast<int>(keep_tri.size()))
       throw std::logic_error("continuum hole: an element set that is not one per triangle");

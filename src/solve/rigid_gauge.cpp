@@ -56,7 +56,8 @@ RigidGauge planar_gauge(const Points& x) {
 }
 
 RigidGauge free_sheet_gauge(const Model& model, const Points& x) {
-  return model.table.size() > 0 ? planar_gauge(x) : rigid_gauge(x);
+  // The table holds the piece only while gravity presses it down.
+  return model.table.size() > 0 && model.gravity.z() < 0.0 ? planar_gauge(x) : rigid_gauge(x);
 }
 
 }  // namespace membra

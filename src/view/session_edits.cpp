@@ -134,6 +134,8 @@ void ViewerSession::reset() {
 std::string ViewerSession::set_parameters(const LiveParameters& p) {
   if (!(p.K > 0.0) || !std::isfinite(p.K)) return "K must be positive";
   if (!std::isfinite(p.G)) return "G must be a number";
+  if (!(p.G > 0.0) && prepared_.membrane.sheet.model.table.size() > 0)
+    return "G must be above 0: the piece rests on a table";
   if (!(p.T > 0.0) || !std::isfinite(p.T)) return "T must be positive";
   if (!(p.D >= 0.0) || !std::isfinite(p.D)) return "D must be zero or positive";
   if (!(p.lambda.x() > 0.0 && p.lambda.y() > 0.0 && p.lambda.maxCoeff() <= 10.0))
@@ -155,6 +157,9 @@ std::string ViewerSession::set_parameters(const LiveParameters& p) {
   }
   if (p.G != params_.G || p.D != params_.D) changed = true;
   model.gravity = Vec3(0.0, 0.0, -p.G);
+  // The table's weights follow G (its contact's depth under a particle's weight stays the same).
+  if (p.G != params_.G && model.table.size() > 0)
+    model.table.rest_on(model.mass, p.G, model.table.height, model.table.softness);
   model.velocity_damping = p.D;
   params_ = p;
   if (changed) model_changed();

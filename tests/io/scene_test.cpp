@@ -316,6 +316,11 @@ TEST(Scene, ProtocolErrorsNameTheField) {
   j["simulation"]["G"] = 0;  // a table with nothing to press the piece onto it
   EXPECT_EQ(error_at(j), "/simulation/support");
   j = with_protocol(strip);
+  j["simulation"]["G"] = 9.81;
+  j["simulation"]["support"] = "table";
+  j["protocol"].push_back({{"step", "load"}, {"gravity", 0}});  // would lift it off the table
+  EXPECT_EQ(error_at(j), "/protocol/3/gravity");
+  j = with_protocol(strip);
   j["protocol"].erase(0);  // release without stretch
   EXPECT_EQ(error_at(j), "/protocol/1");
   j = with_protocol({{"image", {{"file", "no-such-mask.png"}}}});

@@ -217,6 +217,26 @@ TEST(ViewerSession, LiveParametersChangeTheModel) {
   EXPECT_EQ(s.parameters().K, p.K);  // refused changes leave everything as it was
 }
 
+// On a table, G weighs the piece onto it: a new G re-weighs every particle, and a G that would
+// lift the piece off is refused (the saved scene would be refused too).
+TEST(ViewerSession, OnATableGravityStaysAboveZeroAndWeighsTheContacts) {
+  Scene scene = small_scene();
+  scene.simulation.support = Support::table;
+  scene.simulation.gravity = 9.81;
+  ViewerSession s(scene);
+  const TableContact& table = s.membrane().sheet.model.table;
+  ASSERT_EQ(table.size(), s.membrane().sheet.model.num_particles());
+  const double w0 = table.weight[0];
+  LiveParameters p = s.parameters();
+  p.G = 2.0 * 9.81;
+  ASSERT_EQ(s.set_parameters(p), "");
+  EXPECT_NEAR(s.membrane().sheet.model.table.weight[0], 2.0 * w0, 1e-12 * w0);
+  p.G = 0.0;
+  EXPECT_NE(s.set_parameters(p), "");
+  EXPECT_EQ(s.parameters().G, 2.0 * 9.81);
+  EXPECT_EQ(s.to_scene_json()["simulation"]["support"], "table");
+}
+
 TEST(ViewerSession, ADivergingStepIsUndoneNotShown) {
   ViewerSession s(small_scene());
   ASSERT_EQ(s.stretch(), "");
