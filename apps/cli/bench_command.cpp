@@ -10,7 +10,6 @@
 
 #include "membra/core/input_error.hpp"
 #include "membra/io/scene.hpp"
-#include "membra/model/continuum_sheet.hpp"
 #include "membra/output/bench_report.hpp"
 #include "membra/process/bench.hpp"
 #include "membra/process/scene_bench.hpp"
@@ -63,9 +62,7 @@ std::vector<std::vector<std::string>> scene_variants(const BenchArgs& args,
                        "sheet.resolution=[" + std::to_string(n) + "," + std::to_string(n) + "]"});
     } else if (model == "continuum") {
       const Scene own = load_scene(file, {"model=continuum"});
-      const double edge = own.mesh.max_edge > 0.0
-                              ? own.mesh.max_edge
-                              : default_max_edge(own.grid.width, own.grid.height);
+      const double edge = scene_max_edge(own);
       for (double scale : args.scene_mesh_scales) {
         // Within what a scene accepts (src/io/scene.cpp), so a small scale cannot end the bench.
         const long across = std::clamp(std::lround(own.mesh.elements_across / scale), 1L, 64L);
@@ -161,11 +158,12 @@ int cmd_bench(const BenchArgs& args) {
   const std::vector<BenchRow> rows = run_bench(o);
   const std::vector<SceneBenchRow> scene_rows =
       args.scenes ? run_scene_bench(args) : std::vector<SceneBenchRow>{};
+  const std::vector<SceneBenchSummary> summaries = summarize_scene_bench(scene_rows);
   if (args.json || !args.json_out.empty()) {
     nlohmann::json j = bench_report(rows, o, omp_get_max_threads());
     if (args.scenes) {
       j["scenes"] = scene_bench_report(scene_rows);
-      j["scene_summary"] = scene_summary_report(summarize_scene_bench(scene_rows));
+      j["scene_summary"] = scene_summary_report(summaries);
     }
     if (!args.json_out.empty()) {
       std::ofstream out(args.json_out);
@@ -183,7 +181,7 @@ int cmd_bench(const BenchArgs& args) {
   print_table(rows, o);
   if (args.scenes) {
     print_scene_table(scene_rows, args.budget);
-    print_scene_summary(summarize_scene_bench(scene_rows));
+    print_scene_summary(summaries);
   }
   return 0;
 }

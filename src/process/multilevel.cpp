@@ -12,7 +12,6 @@
 #include "membra/core/units.hpp"
 #include "membra/geometry/grid_prolongation.hpp"
 #include "membra/geometry/mesh_prolongation.hpp"
-#include "membra/model/continuum_sheet.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {
@@ -125,8 +124,7 @@ GridLevel made(GridLevel level, const RunResult& r, bool from_coarser) {
 
 std::vector<GridLevel> multilevel_meshes(const Scene& scene) {
   GridLevel own;
-  own.max_edge = scene.mesh.max_edge > 0.0 ? scene.mesh.max_edge
-                                           : default_max_edge(scene.grid.width, scene.grid.height);
+  own.max_edge = scene_max_edge(scene);
   own.elements_across = scene.mesh.elements_across;
   std::vector<GridLevel> levels{own};
   const int coarsest = scene.simulation.multilevel;

@@ -2,6 +2,8 @@
 
 #include <functional>
 
+#include "membra/model/continuum_sheet.hpp"
+
 namespace membra {
 
 namespace {
@@ -23,6 +25,11 @@ const char* to_string(SheetModel model) {
 
 const char* to_string(Support support) {
   return support == Support::table ? "table" : "none";
+}
+
+double scene_max_edge(const Scene& scene) {
+  return scene.mesh.max_edge > 0.0 ? scene.mesh.max_edge
+                                   : default_max_edge(scene.grid.width, scene.grid.height);
 }
 
 PatternPtr scene_pattern(const Scene& scene) {

@@ -413,8 +413,7 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   const bool gauged = !any_pinned && n >= 3;
   const RigidGauge gauge = gauged ? free_sheet_gauge(model, state.x) : RigidGauge{};
   Model turned;  // a turn about z (the planar gauge's) leaves gravity and the table as they are
-  const bool turn_gravity = gauged && !(model.table.size() > 0 && model.gravity.z() < 0.0) &&
-                            model.gravity != Vec3::Zero();
+  const bool turn_gravity = gauged && !held_by_table(model) && model.gravity != Vec3::Zero();
   if (turn_gravity) turned = model, turned.gravity = gauge.rotation * model.gravity;
   const Model& m = turn_gravity ? turned : model;
   Points x = gauged ? Points(gauge.rotation * state.x) : state.x;

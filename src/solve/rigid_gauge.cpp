@@ -55,9 +55,12 @@ RigidGauge planar_gauge(const Points& x) {
   return g;
 }
 
+bool held_by_table(const Model& model) {
+  return model.table.size() > 0 && model.gravity.z() < 0.0;
+}
+
 RigidGauge free_sheet_gauge(const Model& model, const Points& x) {
-  // The table holds the piece only while gravity presses it down.
-  return model.table.size() > 0 && model.gravity.z() < 0.0 ? planar_gauge(x) : rigid_gauge(x);
+  return held_by_table(model) ? planar_gauge(x) : rigid_gauge(x);
 }
 
 }  // namespace membra

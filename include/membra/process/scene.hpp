@@ -94,6 +94,9 @@ struct Scene {
 
 // The union of every impregnate step's pattern (nullptr if none), and the frame box (m) it lies
 // in: the sheet stretched by all stretch steps.
+// The continuum mesh's largest edge the scene asks for (m): its own, or the default.
+double scene_max_edge(const Scene& scene);
+
 PatternPtr scene_pattern(const Scene& scene);
 // The union of the patterns coated on the underside only (bilayer steps on the bottom face) when
 // `underside`, else of all the others: the two sheets of a stencil cut for both faces.

@@ -29,6 +29,9 @@ RigidGauge rigid_gauge(const Points& x);
 // The planar gauge for positions x (at least two particles, not one above the other).
 RigidGauge planar_gauge(const Points& x);
 
+// Whether the table holds the sheet up: there is one, and gravity presses the sheet onto it.
+bool held_by_table(const Model& model);
+
 // The gauge a sheet that no pin holds takes: the planar one on a table, else the rigid one.
 RigidGauge free_sheet_gauge(const Model& model, const Points& x);
 
