@@ -13,6 +13,7 @@
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/benchmark_problem.hpp"
+#include "membra/model/continuum_sheet.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/model/sheet.hpp"
 #include "membra/solve/hessian_assembler.hpp"
@@ -128,6 +129,28 @@ void BM_HessianAssembly(benchmark::State& state) {
   set_per_item(state, b.sheet.model.num_particles());  // ns per particle
 }
 BENCHMARK(BM_HessianAssembly)->Args({64, 0})->Args({64, 1})->Unit(benchmark::kMillisecond);
+
+// The same on the continuum model: a 200 mm latex square meshed with edges up to arg 0 mm
+// (10: exp5_shrink's default mesh size, about 1 100 vertices), membrane and shell triangles,
+// bent into the same saddle; exact (arg 1 = 0) or projected (1). Each shell triangle's block
+// couples the 12 particles of its stencil (docs/model.md, "Bending").
+void BM_ContinuumHessianAssembly(benchmark::State& state) {
+  membra::ContinuumSpec spec;
+  spec.mesh.max_edge = 1e-3 * static_cast<double>(state.range(0));
+  const membra::Sheet sheet = membra::build_continuum_sheet(spec);
+  Points x = sheet.model.reference;
+  for (Eigen::Index p = 0; p < x.cols(); ++p)
+    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+  std::vector<int> dof(static_cast<size_t>(x.size()));
+  for (size_t k = 0; k < dof.size(); ++k) dof[k] = static_cast<int>(k);
+  membra::HessianAssembler a(sheet.model, dof, static_cast<int>(dof.size()));
+  for (auto _ : state) {
+    const auto& h = a.assemble(x, state.range(1) != 0);
+    benchmark::DoNotOptimize(h.valuePtr());
+  }
+  set_per_item(state, sheet.model.num_particles());  // ns per particle
+}
+BENCHMARK(BM_ContinuumHessianAssembly)->Args({10, 0})->Args({10, 1})->Unit(benchmark::kMillisecond);
 
 // One numeric factorization of that Hessian (made positive definite by a shift of its
 // diagonal) by CHOLMOD's supernodal Cholesky, as Newton factorizes every iteration, with the

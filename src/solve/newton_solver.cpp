@@ -87,6 +87,7 @@ class Newton {
   bool indefinite_step();
   bool continuation_step();
   bool exact_is_positive_definite();
+  void assemble_exact();
   bool factorize(const Eigen::SparseMatrix<double>& a);
   bool line_search(const Eigen::VectorXd& d, double slope, double curvature,
                    const Eigen::VectorXd& e = {});
@@ -114,6 +115,7 @@ class Newton {
   double last_alpha_ = 0.0;
   double ptc_shift_ = 1.0;  // continuation: 1/h^2, the implicit-Euler shift, units of diag|H|
   Eigen::VectorXd nc_;      // the last direction of negative curvature (power iteration's start)
+  Points exact_x_;          // where exact_ was last assembled
 };
 
 void Newton::evaluate() {
@@ -207,11 +209,16 @@ bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvatur
 // rigid motions; the shift only keeps floppy but stable modes factorizable): success means the
 // energy is convex here, a minimum if the forces vanish.
 bool Newton::exact_is_positive_definite() {
-  exact_.assemble(x_, false);
+  assemble_exact();
   double floor = 0.0;
   const Eigen::VectorXd diag = shift_metric(exact_, floor);
   exact_.add_to_diagonal((1e-10 * diag).array() + floor);
   return factorize(exact_.lower());
+}
+
+void Newton::assemble_exact() {
+  exact_.assemble(x_, false);
+  exact_x_ = x_;
 }
 
 bool Newton::exact_step() {
@@ -245,7 +252,12 @@ bool Newton::factor_projected() {
 // continue the sheet's present out-of-plane displacement, so the side is the seeded
 // perturbation's (resin_side).
 bool Newton::negative_curvature(Eigen::VectorXd& v, double& curvature) {
-  exact_.assemble(x_, false);
+  // The exact Hessian at x, without the shift its factorization attempt added (the same
+  // numbers as a new assembly), or assembled anew where it was not tried here.
+  if (exact_x_.cols() == x_.cols() && exact_x_ == x_)
+    exact_.remove_shifts();
+  else
+    assemble_exact();
   if (nc_.size() != ndof_) {
     std::mt19937 rng(12345);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -309,7 +321,7 @@ bool Newton::indefinite_step() {
 // at 21^2 ended at a saddle). Measured against Newton in docs/solver.md: it still loses, and
 // stays as a benchmark candidate.
 bool Newton::continuation_step() {
-  exact_.assemble(x_, false);
+  assemble_exact();
   double floor = 0.0;
   const Eigen::VectorXd diag = shift_metric(exact_, floor);
   double applied = 0.0;

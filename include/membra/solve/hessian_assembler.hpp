@@ -4,6 +4,7 @@
 // sparse matrix whose pattern is fixed at construction: each element knows the positions of its
 // entries in the value array, so an assembly only adds numbers. Only the lower triangle is kept,
 // as the sparse Cholesky factorization reads it (docs/solver.md).
+#include <utility>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -25,6 +26,8 @@ class HessianAssembler {
   const Eigen::SparseMatrix<double>& assemble(const Points& x, bool project);
   // Adds shift[k] to diagonal entry k of the last assembled matrix.
   const Eigen::SparseMatrix<double>& add_to_diagonal(const Eigen::VectorXd& shift);
+  // The last assembled matrix as it was assembled, bit for bit, its shifts taken off.
+  const Eigen::SparseMatrix<double>& remove_shifts();
   // The diagonal of the last assembled matrix.
   Eigen::VectorXd diagonal() const;
   // The lower triangle (the matrix the factorization reads).
@@ -33,13 +36,23 @@ class HessianAssembler {
   Eigen::VectorXd multiply(const Eigen::VectorXd& v) const;
 
  private:
-  template <int N>
-  void add_block(const Eigen::Matrix<double, 3 * N, 3 * N>& block, const int* slot);
+  // An element set's entries: (entry of an element's block, its place in the value array),
+  // element e's from start[e] to start[e + 1].
+  struct Entries {
+    std::vector<size_t> start;
+    std::vector<std::pair<int, int>> entries;
+  };
+  // Adds an element's block (column-major) at its entries.
+  void add_block(const double* block, const std::pair<int, int>* begin,
+                 const std::pair<int, int>* end);
 
   const Model* model_;
   Eigen::SparseMatrix<double> h_;
-  std::vector<std::vector<int>> slots_;  // per element set, in Model::for_each_set order
+  std::vector<Entries> entries_;  // per element set, in Model::for_each_set order
   std::vector<int> diag_slots_;
+  bool shifted_ = false;  // add_to_diagonal since the assembly: its diagonal kept below
+  Eigen::VectorXd unshifted_diagonal_;
+  std::vector<double> buffer_;  // a batch of element blocks
 };
 
 // The Hessian of the potential energy at x over all 3N coordinates (pins ignored), full

@@ -8,7 +8,6 @@
 
 #include <Eigen/Dense>
 
-#include "membra/core/second_order.hpp"
 #include "membra/model/bilayer.hpp"
 #include "membra/model/elements/membrane_triangles.hpp"
 #include "membra/model/material.hpp"
@@ -20,8 +19,6 @@ namespace membra {
 static_assert(ElementSet<ShellTriangles>);
 
 namespace {
-
-using Jet = SecondOrder<15>;  // d1 = x1 - x0, d2 = x2 - x0, then w0, w1, w2
 
 // The plates' bilinear form: sum over layers of A (D/2) [nu tr(Ma) tr(Mb) + (1 - nu) tr(Ma Mb)],
 // M = G^-1 X; the energy is Q(II, II).
@@ -412,47 +409,76 @@ Eigen::Matrix<double, 15, 1> reduced_gradient(const ShellState& st) {
   return g;
 }
 
-// The same energy's Hessian over those 15 variables, by second-order dual numbers.
-Eigen::Matrix<double, 15, 15> reduced_hessian(const ShellTriangles::Plan& pl,
-                                              const ShellState& st) {
-  if (st.c_norm == 0.0) return Eigen::Matrix<double, 15, 15>::Zero();
-  std::array<Jet, 3> d1, d2, c;
-  for (int j = 0; j < 3; ++j) {
-    d1[static_cast<size_t>(j)] = Jet::variable(st.d1[j], j);
-    d2[static_cast<size_t>(j)] = Jet::variable(st.d2[j], 3 + j);
-  }
-  c[0] = d1[1] * d2[2] - d1[2] * d2[1];
-  c[1] = d1[2] * d2[0] - d1[0] * d2[2];
-  c[2] = d1[0] * d2[1] - d1[1] * d2[0];
-  const Jet inv = Jet(1.0) / sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-  std::array<Jet, 3> s;
-  for (int k = 0; k < 3; ++k) {
-    Jet dot(0.0);
-    for (int j = 0; j < 3; ++j)
-      dot = dot + c[static_cast<size_t>(j)] * Jet::variable(st.w(j, k), 6 + 3 * k + j);
-    s[static_cast<size_t>(k)] = dot * inv;
-  }
-  Jet e(0.0);
-  std::array<Jet, 3> ii;
-  for (int r = 0; r < 3; ++r)
-    ii[static_cast<size_t>(r)] =
-        s[0] * pl.map(r, 0) + s[1] * pl.map(r, 1) + s[2] * pl.map(r, 2) + Jet(pl.shift[r]);
-  for (int r = 0; r < 3; ++r)
-    for (int q = 0; q < 3; ++q)
-      if (pl.form(r, q) != 0.0)
-        e = e + ii[static_cast<size_t>(r)] * ii[static_cast<size_t>(q)] * pl.form(r, q);
-  return e.h;
+Eigen::Matrix3d cross_matrix(const Vec3& a) {
+  Eigen::Matrix3d m;
+  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return m;
 }
 
-// The 15 reduced variables as a linear map of the stencil's 36 coordinates.
-Eigen::Matrix<double, 15, 36> reduced_map(const ShellTriangles::Plan& pl) {
-  Eigen::Matrix<double, 15, 36> l = Eigen::Matrix<double, 15, 36>::Zero();
-  const Eigen::Matrix3d id = Eigen::Matrix3d::Identity();
-  l.block<3, 3>(0, 0) = l.block<3, 3>(3, 0) = -id;
-  l.block<3, 3>(0, 3) = l.block<3, 3>(3, 6) = id;
-  for (int k = 0; k < 3; ++k)
-    for (int a = 0; a < 12; ++a) l.block<3, 3>(6 + 3 * k, 3 * a) += pl.coef(k, a) * id;
-  return l;
+// The same energy's Hessian over those 15 variables, in closed form. With A = d2E/ds2 and the
+// slopes' gradients J (rows), H = J^T A J + sum_k dE/ds_k d2s_k, where s_k = w_k . c / |c| and
+// c = d1 x d2 is bilinear: d2s_k holds t's second derivative in c (through d1, d2), the normal's
+// derivative P / |c| between w_k and c, and q_k = P w_k / |c| against c's own second derivative.
+Eigen::Matrix<double, 15, 15> reduced_hessian(const ShellTriangles::Plan& pl,
+                                              const ShellState& st) {
+  using Mat15 = Eigen::Matrix<double, 15, 15>;
+  if (st.c_norm == 0.0) return Mat15::Zero();
+  const double n = st.c_norm;
+  const Vec3& t = st.t;
+  const Eigen::Matrix3d proj = Eigen::Matrix3d::Identity() - t * t.transpose();
+  Eigen::Matrix<double, 3, 6> dc;  // dc/d(d1, d2)
+  dc << -cross_matrix(st.d2), cross_matrix(st.d1);
+  Eigen::Matrix<double, 3, 15> jac = Eigen::Matrix<double, 3, 15>::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 q = proj * st.w.col(k) / n;
+    jac.block<1, 6>(k, 0) = q.transpose() * dc;
+    jac.block<1, 3>(k, 6 + 3 * k) = t.transpose();
+  }
+  const Eigen::Matrix3d a = 2.0 * pl.map.transpose() * pl.form * pl.map;
+  // Small fixed-size products, coefficient by coefficient (Eigen's GEMM costs more at this size).
+  const Eigen::Matrix<double, 15, 3> ja = jac.transpose().lazyProduct(a);
+  Mat15 h = ja.lazyProduct(jac);
+  // sum_k G_k (w_k . d2t/dc2), y = sum_k G_k w_k: t_i's second derivative contracted with y.
+  const Vec3 y = st.w * st.de_ds;
+  const double yt = y.dot(t);
+  const Eigen::Matrix3d tyy = (3.0 * yt * t * t.transpose() - y * t.transpose() -
+                               t * y.transpose() - yt * Eigen::Matrix3d::Identity()) /
+                              (n * n);
+  h.block<6, 6>(0, 0) += dc.transpose() * tyy * dc;
+  // c's own second derivative against dE/dc = P y / |c|: (dd1 x dd2) . g_c.
+  const Eigen::Matrix3d gc = cross_matrix(proj * y / n);
+  h.block<3, 3>(0, 3) -= gc;
+  h.block<3, 3>(3, 0) += gc;
+  // Between w_k and c: G_k P / |c|.
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Matrix<double, 3, 6> m = st.de_ds[k] / n * proj * dc;
+    h.block<3, 6>(6 + 3 * k, 0) += m;
+    h.block<6, 3>(0, 6 + 3 * k) += m.transpose();
+  }
+  return h;
+}
+
+// L^T h L for the map L from the stencil's 36 coordinates to the 15 variables, L = S (x) I3 with
+// S's rows d1 = x1 - x0, d2 = x2 - x0 and w_k = coef(k, .): coordinate by coordinate,
+// (S^T h_ab S) for each pair of axes a, b (h_ab the 5 x 5 block of those axes).
+Eigen::Matrix<double, 36, 36> stencil_hessian(const ShellTriangles::Plan& pl,
+                                              const Eigen::Matrix<double, 15, 15>& h) {
+  Eigen::Matrix<double, 5, 12> sel = Eigen::Matrix<double, 5, 12>::Zero();
+  sel(0, 0) = sel(1, 0) = -1.0;
+  sel(0, 1) = sel(1, 2) = 1.0;
+  sel.bottomRows<3>() = pl.coef;
+  Eigen::Matrix<double, 36, 36> out;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      const Eigen::Matrix<double, 5, 5> hab =
+          Eigen::Map<const Eigen::Matrix<double, 5, 5>, 0, Eigen::Stride<45, 3>>(h.data() + a +
+                                                                                 15 * b);
+      const Eigen::Matrix<double, 12, 5> sh = sel.transpose().lazyProduct(hab);
+      const Eigen::Matrix<double, 12, 12> r = sh.lazyProduct(sel);
+      for (int j = 0; j < 12; ++j)
+        for (int i = 0; i < 12; ++i) out(3 * i + a, 3 * j + b) = r(i, j);
+    }
+  return out;
 }
 
 }  // namespace
@@ -486,8 +512,7 @@ Eigen::Matrix<double, 36, 36> ShellTriangles::hessian(int i, const Points& x, bo
   Eigen::Matrix<double, 15, 15> h = reduced_hessian(pl, st);
   h = 0.5 * (h + h.transpose());
   if (project) h = project_psd(h);
-  const Eigen::Matrix<double, 15, 36> l = reduced_map(pl);
-  return l.transpose() * h * l;
+  return stencil_hessian(pl, h);
 }
 
 void ShellTriangles::add_stiffness_estimate(const Points& x, std::vector<double>& diag) const {
