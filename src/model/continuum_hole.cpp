@@ -26,17 +26,21 @@ std::vector<bool> triangles_kept(const Membrane& m, const Pattern& hole) {
 }
 
 // The sheet's particles, triangles and element sets without what the hole removed. The
-// continuum's triangle sets hold one element per triangle of the sheet, in its order; the table,
-// one per particle, is carried over by its particles (and covers the new sheet after).
+// continuum's triangle sets hold one element per triangle of the sheet, in its order, and lose
+// the hole's triangles (a triangle inside it may keep all three corners, on its edge); every
+// other set (added springs, the table) is carried over by its particles, losing the elements of
+// the particles the hole took (the table covers the new sheet after).
 Sheet sheet_without(const Sheet& old, const std::vector<bool>& keep_tri,
                     std::vector<int>& new_of_old) {
   Model filtered = old.model;
   filtered.for_each_set([&](auto& set) {
-    if constexpr (std::is_same_v<std::decay_t<decltype(set)>, TableContact>) return;
-    if (set.size() == 0) return;
-    if (set.size() != static_cast<int>(keep_tri.size()))
-      throw std::logic_error("continuum hole: an element set that is not one per triangle");
-    set.filter(keep_tri);
+    using Set = std::decay_t<decltype(set)>;
+    if constexpr (std::is_same_v<Set, MembraneTriangles> || std::is_same_v<Set, ShellTriangles>) {
+      if (set.size() == 0) return;
+      if (set.size() != static_cast<int>(keep_tri.size()))
+        throw std::logic_error("continuum hole: a triangle set that is not one per triangle");
+      set.filter(keep_tri);
+    }
   });
   new_of_old.assign(static_cast<size_t>(old.model.num_particles()), -1);
   Sheet n;  // everything but the particles, triangles and elements as before

@@ -163,6 +163,47 @@ TEST(ContinuumSteps, ASlitAndAHoleOnATableKeepTheTableUnderEveryParticle) {
   EXPECT_LE(r.table.reaction, r.table.weight * (1.0 + 1e-6));
 }
 
+// A hole after added springs (on a 100 mm sheet held 1.3 x 1.3, springs at 0.8 of their length
+// in a 30 mm circle on the frame, then a 12 mm hole across the circle's edge): the springs are
+// carried by their particles, those of the particles the hole took are gone, and the rest still
+// pull.
+TEST(ContinuumSteps, AHoleAfterAddedSpringsKeepsTheSpringsOutsideIt) {
+  const nlohmann::json j = {
+      {"name", "springs_hole"},
+      {"model", "continuum"},
+      {"sheet", {{"size", {100, 100}}, {"mesh", {{"max_edge", 10}}}}},
+      {"simulation", {{"solver", "newton"}, {"G", 0}}},
+      {"protocol",
+       {{{"step", "stretch"}, {"lambda", {1.3, 1.3}}},
+        {{"step", "add_springs"},
+         {"pattern", {{"circle", {{"center", {65, 65}}, {"radius", 30}}}}},
+         {"rest_factor", 0.8},
+         {"increments", 2},
+         {"perturbation", 0}},
+        {{"step", "cut"}, {"hole", {{"circle", {{"center", {90, 90}}, {"radius", 12}}}}}}}}};
+  const RunResult r = run_scene(parse_scene(j));
+  ASSERT_TRUE(r.solve.converged) << r.solve.message;
+  const int added = r.steps.at(1).springs_added;
+  const Model& model = r.prepared.membrane.sheet.model;
+  EXPECT_GT(added, 0);
+  EXPECT_GT(model.added_springs.size(), 0);
+  EXPECT_LT(model.added_springs.size(), added);  // the hole took some
+  for (int s = 0; s < model.added_springs.size(); ++s)
+    for (int p : model.added_springs.ids(s)) ASSERT_LT(p, model.num_particles());
+  // The carried springs still pull their region in: on the whole shorter than the edges they were
+  // laid on (rest length / 0.8), though the hole's opening stretches those beside it.
+  const Points& x = r.prepared.membrane.state.x;
+  double ratio = 0.0;
+  for (int s = 0; s < model.added_springs.size(); ++s) {
+    const auto [a, b] = model.added_springs.ids(s);
+    ratio += (x.col(a) - x.col(b)).norm() / (model.added_springs.rest_length[s] / 0.8);
+  }
+  ratio /= model.added_springs.size();
+  std::printf("springs after the hole: %d of %d, at %.4f of their laid length on average\n",
+              model.added_springs.size(), added, ratio);
+  EXPECT_LT(ratio, 0.97);
+}
+
 // Slits leaving the sheet, holes after the sheet moves, and holes reaching the outline: refused
 // before anything runs, naming the field.
 TEST(ContinuumSteps, CutsTheMeshCannotTakeAreRefusedByName) {
