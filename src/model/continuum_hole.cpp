@@ -25,14 +25,30 @@ std::vector<bool> triangles_kept(const Membrane& m, const Pattern& hole) {
   return keep;
 }
 
+// Which added springs stay: those whose middle lies outside the hole on the frame (as for the
+// triangles). A spring along an edge the hole took can keep both its particles, on the hole's
+// rim, and would tie them across it.
+std::vector<bool> springs_kept(const Membrane& m, const Pattern& hole) {
+  const Model& model = m.sheet.model;
+  std::vector<bool> keep;
+  for (int s = 0; s < model.added_springs.size(); ++s) {
+    const auto [a, b] = model.added_springs.ids(s);
+    const Vec3 middle = 0.5 * (model.reference.col(a) + model.reference.col(b));
+    keep.push_back(!hole.contains(middle.head<2>().cwiseProduct(m.stretch)));
+  }
+  return keep;
+}
+
 // The sheet's particles, triangles and element sets without what the hole removed. The
 // continuum's triangle sets hold one element per triangle of the sheet, in its order, and lose
-// the hole's triangles (a triangle inside it may keep all three corners, on its edge); every
-// other set (added springs, the table) is carried over by its particles, losing the elements of
-// the particles the hole took (the table covers the new sheet after).
+// the hole's triangles (a triangle inside it may keep all three corners, on its edge); added
+// springs lose those across the hole (keep_springs); every set is then carried over by its
+// particles, losing the elements of the particles the hole took (the table covers the new sheet
+// after).
 Sheet sheet_without(const Sheet& old, const std::vector<bool>& keep_tri,
-                    std::vector<int>& new_of_old) {
+                    const std::vector<bool>& keep_springs, std::vector<int>& new_of_old) {
   Model filtered = old.model;
+  filtered.added_springs.filter(keep_springs);
   filtered.for_each_set([&](auto& set) {
     using Set = std::decay_t<decltype(set)>;
     if constexpr (std::is_same_v<Set, MembraneTriangles> || std::is_same_v<Set, ShellTriangles>) {
@@ -93,6 +109,7 @@ void update_mesh_record(const Sheet& sheet, const std::vector<int>& new_of_old, 
 }  // namespace continuum_hole
 
 using continuum_hole::sheet_without;
+using continuum_hole::springs_kept;
 using continuum_hole::triangles_kept;
 using continuum_hole::update_mesh_record;
 
@@ -102,7 +119,7 @@ int punch_continuum_hole(Membrane& m, const Pattern& hole, std::vector<Vec2>* wh
     throw std::invalid_argument("the hole removes the whole sheet");
   if (std::all_of(keep_tri.begin(), keep_tri.end(), [](bool k) { return k; })) return 0;
   std::vector<int> new_of_old;
-  Sheet rest = sheet_without(m.sheet, keep_tri, new_of_old);
+  Sheet rest = sheet_without(m.sheet, keep_tri, springs_kept(m, hole), new_of_old);
   if (rest.model.num_particles() == m.sheet.model.num_particles())
     throw std::invalid_argument(
         "the hole is smaller than the mesh's elements there: it would take triangles but no "

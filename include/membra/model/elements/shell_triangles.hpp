@@ -21,7 +21,7 @@
 // both its layers are at rest in: Timoshenko's curvature of the misfit between the coat and the
 // latex (bilayer.hpp), grown with the release as the lattice's hinge moments are; the energy is
 // then the plates' form of II - II0 (docs/model.md, "Bilayer coats").
-// The gradient is analytic and the Hessian exact, by dual numbers.
+// The gradient is analytic and the Hessian exact, in closed form.
 #include <array>
 #include <string_view>
 #include <vector>
