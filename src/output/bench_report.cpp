@@ -60,6 +60,7 @@ nlohmann::json scene_bench_report(const std::vector<SceneBenchRow>& rows) {
                  {"iterations", r.report.iterations},
                  {"factorizations", r.report.factorizations},
                  {"negative_curvature_steps", r.report.negative_curvature_steps},
+                 {"lanczos_steps", r.report.lanczos_steps},
                  {"tangent_corrections", r.report.tangent_corrections},
                  {"increments", r.increments},
                  {"residual_relative", r.report.residual_relative},

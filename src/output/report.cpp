@@ -53,6 +53,7 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
   j["factorizations"] = s.factorizations;
   j["setups"] = s.setups;
   j["negative_curvature_steps"] = s.negative_curvature_steps;
+  j["lanczos_steps"] = s.lanczos_steps;
   j["tangent_corrections"] = s.tangent_corrections;
   j["increments"] = s.increments;
   j["increments_halved"] = s.increments_halved;

@@ -89,6 +89,7 @@ void add_work(SolveReport& total, const SolveReport& r) {
   total.factorizations += r.factorizations;
   total.setups += r.setups;
   total.negative_curvature_steps += r.negative_curvature_steps;
+  total.lanczos_steps += r.lanczos_steps;
   total.tangent_corrections += r.tangent_corrections;
   total.increments += r.increments;
   total.increments_halved += r.increments_halved;

@@ -10,9 +10,9 @@
 #include <dlfcn.h>
 
 #include "membra/model/forces.hpp"
+#include "membra/solve/negative_curvature.hpp"
 #include "membra/solve/newton_workspace.hpp"
 #include "membra/solve/rigid_gauge.hpp"
-#include "membra/solve/serial_factorization.hpp"
 #include "membra/solve/tangent_correction.hpp"
 
 namespace membra {
@@ -70,10 +70,10 @@ class Newton {
         ndof_(ndof),
         o_(o),
         r_(r),
+        ws_(ws),
         exact_(ws.exact),
         projected_(ws.projected),
         llt_(ws.llt),
-        analysed_(ws.analysed),
         tangent_(model, dof, ndof) {
     length_ = saddle_escape_length(model);
   }
@@ -84,6 +84,10 @@ class Newton {
   bool exact_step();
   bool factor_projected();
   bool negative_curvature(Eigen::VectorXd& v, double& curvature);
+  void exact_here();
+  const Eigen::VectorXd& last_negative_curvature();
+  bool shifted_negative_curvature(Eigen::VectorXd& v, double& curvature);
+  bool escape_direction(Eigen::VectorXd& v, double& curvature) const;
   bool indefinite_step();
   bool continuation_step();
   bool exact_is_positive_definite();
@@ -103,9 +107,9 @@ class Newton {
   int ndof_;
   const NewtonOptions& o_;
   SolveReport& r_;
+  NewtonWorkspace& ws_;
   HessianAssembler &exact_, &projected_;  // the workspace's
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>& llt_;
-  bool& analysed_;
   TangentCorrection tangent_;
   Points f_;
   double energy_ = 0.0;
@@ -115,7 +119,11 @@ class Newton {
   double last_alpha_ = 0.0;
   double ptc_shift_ = 1.0;  // continuation: 1/h^2, the implicit-Euler shift, units of diag|H|
   Eigen::VectorXd nc_;      // the last direction of negative curvature (power iteration's start)
-  Points exact_x_;          // where exact_ was last assembled
+  double escape_shift_ = 1e-8;  // the shifted search's last working shift, units of diag|H|
+  Points exact_x_;              // where exact_ was last assembled
+  int stalled_ = 0;             // iterations since the residual last fell to half its reference
+  double reference_residual_ = 0.0;
+  static constexpr int kStalled = 20;  // stalled_ from which the shifted search is asked
 };
 
 void Newton::evaluate() {
@@ -165,13 +173,8 @@ Eigen::VectorXd Newton::corrected(const Eigen::VectorXd& d, const HessianAssembl
 }
 
 bool Newton::factorize(const Eigen::SparseMatrix<double>& a) {
-  {
-    const SerialFactorization serial;
-    if (!analysed_) llt_.analyzePattern(a), analysed_ = true;
-    llt_.factorize(a);
-  }
   ++r_.factorizations;
-  return llt_.info() == Eigen::Success;
+  return ws_.factorize(a);
 }
 
 // Backtracking on the energy along d: alpha is accepted when the energy falls by at least 1e-4
@@ -244,32 +247,47 @@ bool Newton::factor_projected() {
   return false;
 }
 
-// With the projected matrix A factored at x: power iteration on I - A^-1 H, whose eigenvalues
-// above 1 belong to directions of negative curvature of the energy, finds the most negative one
-// in A's metric (warm-started from the last one found, so a few iterations suffice). Returns
-// false when the energy has no negative curvature there. The direction is scaled to move no
-// particle by more than a mean spring length and turned downhill, or (at an exact saddle) to
-// continue the sheet's present out-of-plane displacement, so the side is the seeded
-// perturbation's (resin_side).
-bool Newton::negative_curvature(Eigen::VectorXd& v, double& curvature) {
-  // The exact Hessian at x, without the shift its factorization attempt added (the same
-  // numbers as a new assembly), or assembled anew where it was not tried here.
+// The exact Hessian at x without shifts: the matrix the last factorization attempt shifted
+// (the same numbers as a new assembly), or assembled anew where it was not tried here.
+void Newton::exact_here() {
   if (exact_x_.cols() == x_.cols() && exact_x_ == x_)
     exact_.remove_shifts();
   else
     assemble_exact();
+}
+
+// The last direction of negative curvature found, or a fixed random one: the searches' start.
+const Eigen::VectorXd& Newton::last_negative_curvature() {
   if (nc_.size() != ndof_) {
     std::mt19937 rng(12345);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     nc_.resize(ndof_);
     for (Eigen::Index k = 0; k < ndof_; ++k) nc_[k] = u(rng);
   }
-  v = nc_;
+  return nc_;
+}
+
+// With the projected matrix A factored at x: power iteration on I - A^-1 H, whose eigenvalues
+// above 1 belong to directions of negative curvature of the energy, finds the most negative one
+// in A's metric (warm-started from the last one found, so a few iterations suffice). Returns
+// false when the energy has no negative curvature there; the direction is scaled and turned by
+// escape_direction.
+bool Newton::negative_curvature(Eigen::VectorXd& v, double& curvature) {
+  exact_here();
+  v = last_negative_curvature();
   for (int it = 0; it < 8; ++it) {
     v = llt_.solve(projected_.multiply(v) - exact_.multiply(v));
     v /= v.norm();
   }
   nc_ = v;
+  return escape_direction(v, curvature);
+}
+
+// Scales a direction v of negative curvature of exact_ to move no particle by more than the
+// escape length and turns it downhill, or (at an exact saddle) so that it continues the sheet's
+// present out-of-plane displacement, so the side is the seeded perturbation's (resin_side); false
+// if v.Hv is not negative.
+bool Newton::escape_direction(Eigen::VectorXd& v, double& curvature) const {
   const Points dv = moved(v, 1.0) - x_;
   const double largest = dv.colwise().norm().maxCoeff();
   if (!(v.dot(exact_.multiply(v)) < 0.0) || !(largest > 0.0)) return false;
@@ -286,6 +304,26 @@ bool Newton::negative_curvature(Eigen::VectorXd& v, double& curvature) {
   return true;
 }
 
+// Where the power iteration finds no negative curvature (a small negative eigenvalue among the
+// wrinkling latex's soft modes): the exact Hessian's most negative curvature by the shifted
+// Lanczos search (negative_curvature.hpp), scaled and turned by escape_direction. Leaves llt_
+// holding the shifted exact matrix; the shift's ladder starts a decade below its last success.
+bool Newton::shifted_negative_curvature(Eigen::VectorXd& v, double& curvature) {
+  exact_here();
+  double floor = 0.0;
+  const Eigen::VectorXd metric = shift_metric(exact_, floor).array() + floor;
+  const CurvatureSearch s =
+      most_negative_curvature(exact_, metric, last_negative_curvature(), escape_shift_ / 10.0,
+                              {[this](const auto& a) { return ws_.factorize(a); },
+                               [this](const auto& b) { return Eigen::VectorXd(llt_.solve(b)); }});
+  r_.factorizations += s.factorizations;
+  if (s.shift > 0.0) escape_shift_ = s.shift;
+  if (!s.found) return false;
+  nc_ = s.direction;
+  v = s.direction;
+  return escape_direction(v, curvature);
+}
+
 // The better of the projected Newton step and a step along negative curvature, judged by the
 // energy decrease each promises (-g.d/2 for the Newton step of the convex model; -(g.v + v.Hv/2)
 // along negative curvature, where the quadratic model has no minimum).
@@ -295,11 +333,18 @@ bool Newton::indefinite_step() {
   const double slope = g.dot(d);
   Eigen::VectorXd v;
   double curvature = 0.0;
-  const bool has_nc = negative_curvature(v, curvature);
+  bool has_nc = negative_curvature(v, curvature);
+  // The shifted search costs a few factorizations: asked for only at a saddle (small forces) or
+  // where Newton has stalled, which the hyperbola's creep does and a steady release does not
+  // (docs/solver.md, "The saddle's escape").
+  const bool stuck = r_.residual_relative <= o_.tolerance || stalled_ >= kStalled;
+  const bool lanczos = !has_nc && stuck && shifted_negative_curvature(v, curvature);
+  has_nc = has_nc || lanczos;
   const double promised_nc = has_nc ? -(g.dot(v) + 0.5 * curvature) : 0.0;
   if (has_nc && (promised_nc > -0.5 * slope || !(slope < 0.0))) {
     if (line_search(v, g.dot(v), curvature)) {
       ++r_.negative_curvature_steps;
+      if (lanczos) ++r_.lanczos_steps;
       return true;
     }
   }
@@ -368,6 +413,12 @@ void Newton::run(const Stopwatch& clock) {
     }
     if (o_.progress)
       o_.progress({"", it, o_.max_iterations, r_.residual_relative, clock.seconds(), -1.0, -1.0});
+    if (it == 0 || r_.residual < 0.5 * reference_residual_) {
+      reference_residual_ = r_.residual;
+      stalled_ = 0;
+    } else {
+      ++stalled_;
+    }
     if (r_.residual_relative <= o_.tolerance) {
       if (exact_recent || exact_is_positive_definite()) {
         r_.converged = true;

@@ -1,5 +1,7 @@
 #include "membra/solve/newton_workspace.hpp"
 
+#include "membra/solve/serial_factorization.hpp"
+
 namespace membra {
 namespace {
 
@@ -43,6 +45,13 @@ bool NewtonWorkspace::fits(const Model& model, const std::vector<int>& dof) cons
       }
   });
   return same && at == elements_.size();
+}
+
+bool NewtonWorkspace::factorize(const Eigen::SparseMatrix<double>& a) {
+  const SerialFactorization serial;
+  if (!analysed) llt.analyzePattern(a), analysed = true;
+  llt.factorize(a);
+  return llt.info() == Eigen::Success;
 }
 
 void NewtonWorkspace::bind(const Model& model) {

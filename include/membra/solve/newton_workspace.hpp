@@ -26,6 +26,10 @@ struct NewtonWorkspace {
   bool fits(const Model& model, const std::vector<int>& dof) const;
   // The assemblers read `model` from now on (a model that fits).
   void bind(const Model& model);
+  // Factorizes `a` (a matrix of the assemblers' pattern) into llt, on one thread
+  // (SerialFactorization), analysing the pattern the first time; false where `a` is not
+  // positive definite.
+  bool factorize(const Eigen::SparseMatrix<double>& a);
 
   HessianAssembler exact, projected;
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;

@@ -19,6 +19,7 @@ struct SolveReport {
   long factorizations = 0;            // newton: sparse Cholesky factorizations
   long setups = 0;                    // newton: patterns and symbolic analyses set up
   long negative_curvature_steps = 0;  // newton: steps taken along negative curvature (saddles)
+  long lanczos_steps = 0;             // newton: of those, found by the shifted Lanczos search
   long tangent_corrections = 0;       // newton: steps curved by the tangent correction
   long increments = 0;                // path increments solved (a retried one counts once)
   long increments_halved = 0;         // newton: increments that failed and were taken in halves
