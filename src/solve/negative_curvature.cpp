@@ -10,15 +10,16 @@ namespace membra {
 namespace {
 
 // The smallest shift s on a ladder (x sqrt 10 from `first`) for which H + s D factorizes into f,
-// or 0. H + s D needs a positive diagonal: where H has a negative one (a compressed membrane's
-// out-of-plane entries) no shift below that entry's -H_ii / D_ii can work, so the ladder starts
-// there at the earliest. h is left without its shift.
+// or 0. The most negative eigenvalue is at most every H_ii / D_ii (a Rayleigh quotient), so where
+// H has negative diagonal entries (a compressed membrane's out-of-plane ones) no shift up to the
+// largest -H_ii / D_ii can work: the ladder starts half as high again at the earliest. h is left
+// without its shift.
 double factor_shifted(HessianAssembler& h, const Eigen::VectorXd& metric, double first,
-                      const Factorization& f, int& factorizations) {
+                      const CholeskyFactor& f, int& factorizations) {
   const double needed = (-h.diagonal().array() / metric.array()).maxCoeff();
   double applied = 0.0;
   bool factored = false;
-  for (double shift = std::max(first, needed); shift <= 1e6 && !factored;
+  for (double shift = std::max({first, 1.5 * needed, 1e-12}); shift <= 1e6 && !factored;
        shift *= std::sqrt(10.0)) {
     h.add_to_diagonal((shift - applied) * metric);
     applied = shift;
@@ -38,7 +39,7 @@ double factor_shifted(HessianAssembler& h, const Eigen::VectorXd& metric, double
 // them (docs/solver.md, "The saddle's escape").
 CurvatureSearch most_negative_curvature(HessianAssembler& h, const Eigen::VectorXd& metric,
                                         const Eigen::VectorXd& start, double first_shift,
-                                        const Factorization& f) {
+                                        const CholeskyFactor& f) {
   CurvatureSearch s;
   s.shift = factor_shifted(h, metric, first_shift, f, s.factorizations);
   if (s.shift == 0.0) return s;
@@ -52,24 +53,29 @@ CurvatureSearch most_negative_curvature(HessianAssembler& h, const Eigen::Vector
   for (; m < kSteps; ++m) {
     Eigen::VectorXd w = f.solve(metric.cwiseProduct(q[static_cast<size_t>(m)]));
     alpha[m] = d_dot(w, q[static_cast<size_t>(m)]);
-    for (int pass = 0; pass < 2; ++pass)  // twice is enough (Kahan, Parlett)
-      for (const Eigen::VectorXd& qi : q) w -= d_dot(w, qi) * qi;
-    beta[m] = std::sqrt(d_dot(w, w));
-    if (!(beta[m] > 1e-12 * std::abs(alpha[m]))) {  // an invariant subspace: exact
+    if (m + 1 == kSteps) {  // the last: no further vector
       ++m;
       break;
     }
-    if (m + 1 < kSteps) q.push_back(w / beta[m]);
+    for (int pass = 0; pass < 2; ++pass)  // twice is enough (Kahan, Parlett)
+      for (const Eigen::VectorXd& qi : q) w -= d_dot(w, qi) * qi;
+    beta[m] = std::sqrt(d_dot(w, w));
+    if (!(beta[m] > 1e-12 * alpha.head(m + 1).cwiseAbs().maxCoeff())) {  // invariant: exact
+      ++m;
+      break;
+    }
+    q.push_back(w / beta[m]);
   }
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> t;
   t.computeFromTridiagonal(alpha.head(m), beta.head(std::max(m - 1, 0)),
                            Eigen::ComputeEigenvectors);
-  const Eigen::VectorXd y = t.eigenvectors().col(m - 1);  // the largest Ritz value's
+  if (t.info() != Eigen::Success) return s;
+  const Eigen::VectorXd y = t.eigenvectors().col(m - 1);  // the largest Ritz value's (ascending)
   Eigen::VectorXd v = Eigen::VectorXd::Zero(start.size());
   for (int i = 0; i < m; ++i) v += y[i] * q[static_cast<size_t>(i)];
   v /= std::sqrt(d_dot(v, v));
   s.curvature = v.dot(h.multiply(v));
-  s.found = s.curvature < 0.0 && v.allFinite();
+  s.found = s.curvature < -1e-8 && v.allFinite();
   s.direction = std::move(v);
   return s;
 }

@@ -151,11 +151,13 @@ TEST(ContinuumSteps, Exp7sSlitAndHoleAreExactOnTheMesh) {
 
 // exp7's slit and hole on a table (the sheet held on its frame above it): the sheets the cuts
 // rebuild (a hole removes particles, a slit adds its lips) keep one table contact under every
-// particle, at its new weight.
+// particle, at its new weight. On a 20 mm mesh (704 vertices, against 1 305 by default, which
+// took two minutes under the sanitizers): the bookkeeping does not depend on the mesh.
 TEST(ContinuumSteps, ASlitAndAHoleOnATableKeepTheTableUnderEveryParticle) {
-  const Scene scene = load_scene(kExampleDir + "exp7_cut.json",
-                                 {"model=continuum", "simulation.support=table",
-                                  "simulation.G=9.81", "simulation.max_seconds=300"});
+  const Scene scene =
+      load_scene(kExampleDir + "exp7_cut.json",
+                 {"model=continuum", "simulation.support=table", "simulation.G=9.81",
+                  "simulation.max_seconds=300", "sheet.mesh.max_edge=20"});
   const RunResult r = run_scene(scene);
   ASSERT_TRUE(r.solve.converged) << r.solve.message;
   const Model& model = r.prepared.membrane.sheet.model;

@@ -111,8 +111,7 @@ TEST_P(Hostile, ACutThroughEverySpring) {
   for (int k = 0; k < 10; ++k)
     j["protocol"].push_back({{"step", "cut"}, {"line", {{-1, 5 + 10 * k}, {151, 5 + 10 * k}}}});
   // The sheet falls apart into loose particles: at most a few per cent of its springs are left
-  // (which depends on where the pieces lie when each later cut is made, so on Newton's path
-  // through their floppy modes: about 5 % of some 430, which a change of search can move).
+  // (which depends on where the stretched sheet lies when the cuts are made).
   const Stopwatch clock;
   const RunResult r = run_scene(scene_of(j, GetParam()));
   EXPECT_LT(clock.seconds(), 60.0);
@@ -123,7 +122,7 @@ TEST_P(Hostile, ACutThroughEverySpring) {
   for (const auto& step : r.steps) cut += static_cast<size_t>(step.springs_cut);
   const auto left = static_cast<size_t>(r.prepared.membrane.sheet.model.springs.size());
   EXPECT_GT(cut, 300u);
-  EXPECT_LE(left, (cut + left) / 15);
+  EXPECT_LE(left, (cut + left) / 20);
 }
 
 TEST_P(Hostile, OneIncrementAndTenThousandWithinTheBudget) {
