@@ -3,32 +3,48 @@
 namespace membra {
 namespace {
 
+// Ties (a symmetric sheet has several particles equally near the centre or far from it) go to
+// the lowest index: a choice within round-off of another would flip with the last digits of the
+// form, and with it the held coordinates (and a cached Newton setup, which fits only its own).
+// `tie` is the squared distance below which two candidates count as equal.
+bool better(double d, double best, double tie, bool larger) {
+  return larger ? d > best + tie : d < best - tie;
+}
+
 // a, the particle nearest the centre, and b, the one farthest from a, of positions y.
-std::pair<int, int> centre_and_far(const Points& y) {
+std::pair<int, int> centre_and_far(const Points& y, double tie) {
   const Vec3 centre = y.rowwise().mean();
   int a = 0, b = 0;
   double best_a = 1e300, best_b = -1.0;
   for (Eigen::Index p = 0; p < y.cols(); ++p) {
     const double d = (y.col(p) - centre).squaredNorm();
-    if (d < best_a) best_a = d, a = static_cast<int>(p);
+    if (better(d, best_a, tie, false)) best_a = d, a = static_cast<int>(p);
   }
   for (Eigen::Index p = 0; p < y.cols(); ++p) {
     const double d = (y.col(p) - y.col(a)).squaredNorm();
-    if (d > best_b) best_b = d, b = static_cast<int>(p);
+    if (better(d, best_b, tie, true)) best_b = d, b = static_cast<int>(p);
   }
   return {a, b};
+}
+
+// Squared distances closer than 1e-4 of the sheet's squared extent are ties: a particle that
+// near the centre, or that near the farthest, holds the gauge as well (a Newton step moves a
+// symmetric sheet's corners apart by far more than round-off).
+double tie_of(const Points& x) {
+  return 1e-4 * (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).squaredNorm();
 }
 
 }  // namespace
 
 RigidGauge rigid_gauge(const Points& x) {
-  const auto [a, b] = centre_and_far(x);
+  const double tie = tie_of(x);
+  const auto [a, b] = centre_and_far(x, tie);
   int c = 0;
   double best_c = -1.0;
   const Vec3 e1 = (x.col(b) - x.col(a)).normalized();
   for (Eigen::Index p = 0; p < x.cols(); ++p) {
     const double d = (x.col(p) - x.col(a)).cross(e1).squaredNorm();
-    if (d > best_c) best_c = d, c = static_cast<int>(p);
+    if (better(d, best_c, tie, true)) best_c = d, c = static_cast<int>(p);
   }
   RigidGauge g;
   const Vec3 e3 = e1.cross(x.col(c) - x.col(a)).normalized();
@@ -44,7 +60,7 @@ RigidGauge rigid_gauge(const Points& x) {
 RigidGauge planar_gauge(const Points& x) {
   Points flat = x;
   flat.row(2).setZero();  // a and b chosen as seen from above
-  const auto [a, b] = centre_and_far(flat);
+  const auto [a, b] = centre_and_far(flat, tie_of(flat));
   RigidGauge g;
   const Vec3 e1 = (flat.col(b) - flat.col(a)).normalized();
   if (e1.allFinite()) {
