@@ -36,6 +36,7 @@ struct Progression {
   const std::filesystem::path& base_dir;
   Vec2 stretch{1.0, 1.0};  // product of the stretches so far
   bool pinned = false, framed = false;
+  bool released = false;  // the sheet has left its frame: where it lies is the run's to find
   double gravity = 0.0;
 
   // The stretched frame (m): where patterns are placed.
@@ -172,6 +173,7 @@ ReleaseStep read_release(const JsonObject& o, Progression& at) {
   ReleaseStep s{read_path(o)};
   if (!at.framed) throw InputError(o.pointer(), "release needs a stretch step before it");
   at.framed = false;
+  at.released = true;
   at.check_equilibrium(o.pointer());
   return s;
 }
@@ -289,7 +291,9 @@ CutStep read_cut(const JsonObject& o, const Progression& at) {
   // Where the sheet is now: the stretched frame, or the natural sheet when no frame holds it.
   const Vec2 frame = at.framed ? at.frame() : Vec2(at.scene.grid.width, at.scene.grid.height);
   const Box2 sheet_box{Vec2::Zero(), frame};
-  auto outside = [&](const Box2& b) { return b.intersect(sheet_box).empty(); };
+  // After the release the sheet lies where its form took it: the run checks the cut against that
+  // (the lattice: it crosses a spring; the continuum: model/top_view.hpp).
+  auto outside = [&](const Box2& b) { return !at.released && b.intersect(sheet_box).empty(); };
   std::ostringstream where;
   where << "[0, " << frame.x() / units::mm << "] x [0, " << frame.y() / units::mm << "] mm";
   if (o.has("line")) {

@@ -12,6 +12,7 @@
 #include "membra/core/units.hpp"
 #include "membra/geometry/grid_prolongation.hpp"
 #include "membra/geometry/mesh_prolongation.hpp"
+#include "membra/process/cut_after_motion.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {
@@ -129,6 +130,9 @@ std::vector<GridLevel> multilevel_meshes(const Scene& scene) {
   std::vector<GridLevel> levels{own};
   const int coarsest = scene.simulation.multilevel;
   if (coarsest <= 0 || !scene.simulation.is_static() || !last_step_is_solved(scene)) return levels;
+  // A last step that cuts the moved sheet meshes it again (cut_after_motion.hpp): a coarser
+  // mesh's form has nowhere to go until the cut is pulled back on this one.
+  if (cut_remeshes(scene, scene.protocol.size() - 1)) return levels;
   const double longer = std::max(scene.grid.width, scene.grid.height);
   for (;;) {
     GridLevel next = levels.front();

@@ -11,6 +11,7 @@
 #include "membra/model/pattern_boundary.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/segment_distance.hpp"
+#include "membra/process/cut_after_motion.hpp"
 #include "membra/process/memory_estimate.hpp"
 
 namespace membra {
@@ -46,27 +47,6 @@ NodeMask outline_mask(const Scene& scene) {
   };
 }
 
-// Holes and slits are cut into the continuum sheet's mesh from the start (continuum_spec),
-// pulled back from the frame to the natural sheet by the stretch: exact while the sheet is the
-// frame's stretch, so before the release and anything else that moves it (a growth, a curvature
-// map, gravity).
-void check_continuum_cut(const Scene& scene, const ProtocolStep& cut_step, const CutStep& cut) {
-  const std::string field = cut_step.pointer + (cut.hole ? "/hole" : "/line");
-  for (const ProtocolStep& step : scene.protocol) {
-    if (&step == &cut_step) return;
-    const auto kind = step.kind();
-    const auto* load = step.as<LoadStep>();
-    if (kind == ProtocolStep::Kind::release || kind == ProtocolStep::Kind::grow ||
-        kind == ProtocolStep::Kind::curvature_map ||
-        (load && load->gravity && *load->gravity != 0.0))
-      throw InputError(field,
-                       std::string("on the continuum model a cut is made before the sheet moves "
-                                   "off its frame; this one follows the ") +
-                           step_name(kind) + " at " + step.pointer +
-                           " (cut it earlier, or set \"model\": \"lattice\")");
-  }
-}
-
 // The steps the continuum sheet cannot take yet, refused before anything runs.
 void check_continuum_protocol(const Scene& scene) {
   for (const ProtocolStep& step : scene.protocol) {
@@ -80,7 +60,6 @@ void check_continuum_protocol(const Scene& scene) {
                        "spring families are the lattice's; on the continuum sheet added springs "
                        "lie along the mesh's edges (leave \"along\" out, or set \"model\": "
                        "\"lattice\")");
-    if (const auto* cut = step.as<CutStep>()) check_continuum_cut(scene, step, *cut);
   }
 }
 
@@ -172,10 +151,13 @@ ContinuumSpec continuum_spec(const Scene& scene) {
   BoundaryOptions o;
   o.tolerance = scene.mesh.tolerance;
   const bool continuum = scene.model == SheetModel::continuum;
-  for (const ProtocolStep& step : scene.protocol) {
+  for (size_t k = 0; k < scene.protocol.size(); ++k) {
+    const ProtocolStep& step = scene.protocol[k];
     if (const auto* st = step.as<StretchStep>()) stretch = stretch.cwiseProduct(st->lambda);
     const auto* imp = step.as<ImpregnateStep>();
-    const auto* cut = step.as<CutStep>();
+    // A cut drawn after the sheet moved is meshed once the run has pulled it back to the
+    // natural sheet (cut_after_motion.hpp); until then the mesh has no part of it.
+    const auto* cut = continuum && cut_remeshes(scene, k) ? nullptr : step.as<CutStep>();
     if (cut && continuum && !cut->line.empty()) add_slit(*cut, stretch, step.pointer, spec);
     const bool hole = cut && cut->hole && continuum;
     if (!imp && !hole) continue;

@@ -6,6 +6,7 @@
 #include <string>
 #include <variant>
 
+#include "membra/core/input_error.hpp"
 #include "membra/process/explore.hpp"
 #include "membra/process/grid_resolution.hpp"
 #include "membra/process/multilevel.hpp"
@@ -47,7 +48,7 @@ ProgressFn SceneRun::whole_run(ProgressFn progress) const {
   if (!progress) return progress;
   return [this, progress = std::move(progress)](const Progress& pr) {
     Progress q = pr;
-    const auto& steps = scene_.protocol;
+    const auto& steps = scene_->protocol;
     double total = 0.0, done = 0.0;
     for (size_t k = 0; k < steps.size(); ++k) {
       const double w = step_weight(steps[k]);
@@ -63,8 +64,9 @@ ProgressFn SceneRun::whole_run(ProgressFn progress) const {
 }
 
 SceneRun::SceneRun(const Scene& scene, ProgressFn progress)
-    : scene_(scene), progress_(whole_run(std::move(progress))) {
+    : scene_(&scene), progress_(whole_run(std::move(progress))) {
   r_.prepared = prepare_scene(scene);
+  keep_forms_ = any_cut_remeshes(scene);
   recorder_ = FrameRecorder{scene.output.frames, &r_.frames};
 }
 
@@ -79,15 +81,48 @@ bool SceneRun::record(StepReport step) {
 // The wall-time budget counts from the first step or solve (a notebook's pauses before it do
 // not count; those between steps do).
 void SceneRun::start_budget() {
-  if (scene_.simulation.max_seconds > 0.0 && !r_.prepared.deadline)
+  if (scene_->simulation.max_seconds > 0.0 && !r_.prepared.deadline)
     r_.prepared.deadline = std::chrono::steady_clock::now() +
                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                               std::chrono::duration<double>(scene_.simulation.max_seconds));
+                               std::chrono::duration<double>(scene_->simulation.max_seconds));
 }
 
-bool SceneRun::apply(const ProtocolStep& step, const Points* start) {
+size_t SceneRun::index_of(const ProtocolStep& step) const {
+  const auto& steps = scene_->protocol;
+  for (size_t k = 0; k < steps.size(); ++k)
+    if (&steps[k] == &step || (!step.pointer.empty() && steps[k].pointer == step.pointer)) return k;
+  return applied_;
+}
+
+void SceneRun::remesh_at(size_t index) {
+  if (forms_.size() != index)
+    throw InputError(scene_->protocol[index].pointer,
+                     "a cut after the sheet has moved is carried over to its new mesh only when "
+                     "the steps before it ran in order, each once");
+  auto own = std::make_unique<Scene>(*scene_);
+  const double spacing = 0.25 * scene_max_edge(*scene_);
+  own->protocol[index] = cut_on_paper(r_.prepared.membrane, scene_->protocol[index], spacing);
+  PreparedScene p = remesh_for_cut(*own, index, forms_, form_of(r_.prepared.membrane));
+  p.deadline = r_.prepared.deadline;
+  r_.prepared = std::move(p);
+  own_scene_ = std::move(own);
+  scene_ = own_scene_.get();
+}
+
+bool SceneRun::apply(const ProtocolStep& given, const Points* start) {
   if (diverged()) throw std::logic_error("the run diverged: no further step can be applied");
   start_budget();
+  const size_t index = index_of(given);
+  if (keep_forms_) forms_.push_back(form_of(r_.prepared.membrane));
+  const bool remesh = cut_remeshes(*scene_, index);
+  if (remesh && start) throw std::logic_error("a cut that re-meshes is not solved from a form");
+  if (remesh) {
+    forms_.pop_back();  // the form before the cut is carried over as the present one
+    remesh_at(index);
+    forms_.push_back(form_of(r_.prepared.membrane));
+  }
+  const ProtocolStep& step = remesh ? scene_->protocol[index] : given;
+  ++applied_;
   StepEffects effects;
   const Path path = apply_step(r_.prepared, step, effects);
   for (StressFeature& f : effects.features) r_.features.push_back(std::move(f));
@@ -99,12 +134,12 @@ bool SceneRun::apply(const ProtocolStep& step, const Points* start) {
     s.x = *start;
     s.v.setZero();
     effects.report.solve =
-        solve_scene_step(scene_, r_.prepared, s, effects.report.name, progress_, &recorder_);
+        solve_scene_step(*scene_, r_.prepared, s, effects.report.name, progress_, &recorder_);
     recorder_.record(r_.prepared.membrane.sheet.model, s.x,
                      r_.prepared.membrane.sheet.material.thickness);
   } else {
     effects.report.solve =
-        follow_path(scene_, r_.prepared, s, effects.report.name, path, progress_, recorder_).solve;
+        follow_path(*scene_, r_.prepared, s, effects.report.name, path, progress_, recorder_).solve;
   }
   if (const auto* cm = step.as<CurvatureMapStep>()) curvature_field_ = cm->curvature;
   return record(std::move(effects.report));
@@ -115,7 +150,7 @@ bool SceneRun::solve() {
   start_budget();
   State& s = r_.prepared.membrane.state;
   return record(
-      {"solve", solve_scene_step(scene_, r_.prepared, s, "solve", progress_, &recorder_), 0});
+      {"solve", solve_scene_step(*scene_, r_.prepared, s, "solve", progress_, &recorder_), 0});
 }
 
 std::vector<std::string> run_warnings(const Scene& scene) {
@@ -126,13 +161,13 @@ std::vector<std::string> run_warnings(const Scene& scene) {
 
 RunResult SceneRun::result() const {
   RunResult r = r_;
-  note_budget(scene_, r);
+  note_budget(*scene_, r);
   if (!r.solve.diverged) summarize_run(r, curvature_field_);
   return r;
 }
 
 RunResult SceneRun::finish() {
-  note_budget(scene_, r_);
+  note_budget(*scene_, r_);
   if (!r_.solve.diverged) summarize_run(r_, curvature_field_);
   return std::move(r_);
 }

@@ -333,6 +333,13 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
     case ProtocolStep::Kind::release:
       return logged(release());
     default:
+      // A cut on the moved continuum sheet needs its mesh made again
+      // (process/cut_after_motion.hpp), which the live session's sheet and undo history do not
+      // follow.
+      if (step.kind() == ProtocolStep::Kind::cut && prepared_.membrane.sheet.continuum() &&
+          stage_ == Stage::released)
+        return "on the continuum model the viewer cuts the sheet on its frame only; `membra run` "
+               "cuts it after the release (it meshes the sheet again)";
       // cut, load, grow, add_springs, curvature_map: as the runner applies them.
       push_undo();
       try {

@@ -206,8 +206,8 @@ TEST(ContinuumSteps, AHoleAfterAddedSpringsKeepsTheSpringsOutsideIt) {
   EXPECT_LT(ratio, 0.97);
 }
 
-// Slits leaving the sheet, holes after the sheet moves, and holes reaching the outline: refused
-// before anything runs, naming the field.
+// Slits leaving the sheet and holes reaching the outline: refused before anything runs, naming
+// the field (cuts after the release: cut_after_motion_test.cpp).
 TEST(ContinuumSteps, CutsTheMeshCannotTakeAreRefusedByName) {
   const auto refused = [](std::vector<std::string> sets, const std::string& field) {
     sets.insert(sets.begin(), "model=continuum");
@@ -219,9 +219,6 @@ TEST(ContinuumSteps, CutsTheMeshCannotTakeAreRefusedByName) {
     }
   };
   refused({"protocol.1.line=[[102, 50], [400, 90]]"}, "/protocol/1/line");
-  refused({"protocol.1={\"step\": \"release\"}"}, "/protocol/2/hole");
-  // A curvature map grows the sheet off its frame's stretch, as a grow step does.
-  refused({"protocol.1={\"step\": \"curvature_map\", \"K\": 1e-5}"}, "/protocol/2/hole");
   refused({"protocol.1={\"step\": \"cut\", \"hole\": {\"circle\": {\"center\": [5, 100], "
            "\"radius\": 15}}}"},
           "/protocol/1/hole");

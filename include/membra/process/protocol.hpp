@@ -79,6 +79,10 @@ struct CutStep {
   std::vector<Vec2> line;
   std::optional<PatternSpec> hole_spec;
   PatternPtr hole;
+  // A cut drawn after the sheet moved off its frame, pulled back through where the sheet lay
+  // (process/cut_after_motion.hpp): its line and hole then name natural-sheet points times the
+  // frame's stretch, as a cut on the frame does, and the continuum's mesh follows them.
+  bool on_paper = false;
 };
 
 // Form from a Gaussian-curvature map: the target K (1/m^2) at a paper position (m).
