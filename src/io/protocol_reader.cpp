@@ -140,6 +140,7 @@ StretchStep read_stretch(const JsonObject& o, Progression& at) {
   at.stretch = at.stretch.cwiseProduct(s.lambda);
   check_not_compressed(o, at.stretch);
   at.framed = true;
+  at.released = false;  // on a frame again: the box check holds
   return s;
 }
 

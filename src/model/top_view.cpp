@@ -35,6 +35,20 @@ std::string TopView::extent() const {
 
 namespace {
 
+// Refuses a jump between two pulled-back points far longer than between the points drawn: the
+// drawn line passed from one layer of a sheet folded over itself to another (or over a flank
+// seen almost edge-on), and a straight boundary between the two paper points would cut through
+// sheet the line never crossed.
+void check_one_layer(const TopView& view, const Vec2& drawn_a, const Vec2& drawn_b,
+                     const Vec2& paper_a, const Vec2& paper_b) {
+  if ((paper_b - paper_a).norm() <= 10.0 * (drawn_b - drawn_a).norm() + 1e-9) return;
+  char at[80];
+  std::snprintf(at, sizeof at, "%.1f, %.1f mm", 1e3 * drawn_b.x(), 1e3 * drawn_b.y());
+  throw std::invalid_argument(std::string("the cut passes from one layer of the sheet to another "
+                                          "as seen from above, at ") +
+                              at + view.extent() + "; draw it where one layer lies");
+}
+
 // The last point on the sheet between `on` (on it) and `off` (off it), by bisection.
 Vec2 edge_between(const TopView& view, Vec2 on, Vec2 off) {
   for (int k = 0; k < 50; ++k) {
@@ -95,15 +109,16 @@ std::vector<Vec2> pull_back_line(const TopView& view, const std::vector<Vec2>& l
   for (size_t k = 0; k + 1 < line.size(); ++k)
     sample_segment(line[k], line[k + 1], spacing, samples);
   samples.push_back(line.back());
-  std::vector<Vec2> out;
+  std::vector<Vec2> out, drawn;  // paper points and where each was drawn
+  const auto add = [&](const Vec2& q) {
+    const Vec2 p = *view.paper_at(q);
+    if (!out.empty()) check_one_layer(view, drawn.back(), q, out.back(), p);
+    out.push_back(p), drawn.push_back(q);
+  };
   bool left = false;  // the line has been on the sheet and run off it
   for (size_t k = 0; k < samples.size(); ++k) {
-    const std::optional<Vec2> p = view.paper_at(samples[k]);
-    if (!p) {
-      if (!out.empty() && !left) {
-        out.push_back(*view.paper_at(edge_between(view, samples[k - 1], samples[k])));
-        left = true;
-      }
+    if (!view.paper_at(samples[k])) {
+      if (!out.empty() && !left) add(edge_between(view, samples[k - 1], samples[k])), left = true;
       continue;
     }
     if (left)
@@ -111,9 +126,8 @@ std::vector<Vec2> pull_back_line(const TopView& view, const std::vector<Vec2>& l
           "the cut leaves the sheet as it lies now (seen from above) and comes back onto it; "
           "draw one cut per piece" +
           view.extent());
-    if (out.empty() && k > 0)
-      out.push_back(*view.paper_at(edge_between(view, samples[k], samples[k - 1])));
-    out.push_back(*p);
+    if (out.empty() && k > 0) add(edge_between(view, samples[k], samples[k - 1]));
+    add(samples[k]);
   }
   if (out.size() < 2)
     throw std::invalid_argument("the cut does not cross the sheet as it lies now" + view.extent());
@@ -135,8 +149,10 @@ std::vector<Vec2> pull_back_polygon(const TopView& view, const std::vector<Vec2>
           std::string("the hole reaches past the sheet as it lies now at ") + at + view.extent() +
           "; on the continuum model a hole lies inside the sheet");
     }
+    if (!out.empty()) check_one_layer(view, samples[out.size() - 1], q, out.back(), *p);
     out.push_back(*p);
   }
+  if (out.size() > 1) check_one_layer(view, samples.back(), samples.front(), out.back(), out[0]);
   return out;
 }
 

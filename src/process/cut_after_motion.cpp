@@ -13,42 +13,53 @@
 namespace membra {
 namespace {
 
-double signed_area(const std::vector<Vec2>& poly) {
-  double a = 0.0;
-  for (size_t k = 0; k < poly.size(); ++k) {
-    const Vec2& p = poly[k];
-    const Vec2& q = poly[(k + 1) % poly.size()];
-    a += p.x() * q.y() - q.x() * p.y();
-  }
-  return 0.5 * a;
-}
-
 std::vector<Vec2> on_frame(std::vector<Vec2> paper, const Vec2& stretch) {
   for (Vec2& p : paper) p = p.cwiseProduct(stretch);
   return paper;
 }
 
-// The hole's outlines where the sheet lies, pulled back: the outer ones joined, the inner ones
-// (islands the hole leaves) taken out, as polygon patterns at paper points times the stretch.
+// The polygons nested `depth` deep in the others (the number of others holding a vertex).
+std::vector<int> nesting(const std::vector<Polygon2>& polys) {
+  std::vector<int> depth(polys.size(), 0);
+  for (size_t i = 0; i < polys.size(); ++i)
+    for (size_t j = 0; j < polys.size(); ++j)
+      if (i != j && make_polygon(polys[j])->contains(polys[i].front())) ++depth[i];
+  return depth;
+}
+
+PatternSpec polygon_spec(std::vector<Vec2> points) {
+  PatternSpec spec;
+  spec.kind = PatternSpec::Kind::polygon;
+  spec.points = std::move(points);
+  return spec;
+}
+
+// The hole's outlines where the sheet lies, pulled back, as the region they bound by the
+// even-odd rule: each outline at an even depth minus the outlines directly inside it (so a ring
+// around a disk keeps the disk), at paper points times the stretch.
 PatternSpec hole_on_paper(const TopView& view, const Membrane& m, const Pattern& hole,
                           double spacing, double tolerance) {
   const Vec2 margin = Vec2::Constant(spacing);
   BoundaryOptions o;
   o.tolerance = tolerance;
-  std::vector<PatternSpec> outer, inner;
-  for (const Polygon2& poly :
-       pattern_boundaries(hole, {view.lo() - margin, view.hi() + margin}, o)) {
-    PatternSpec spec;
-    spec.kind = PatternSpec::Kind::polygon;
-    spec.points = on_frame(pull_back_polygon(view, poly, spacing), m.stretch);
-    (signed_area(poly) >= 0.0 ? outer : inner).push_back(std::move(spec));
-  }
-  if (outer.empty())
+  const std::vector<Polygon2> drawn =
+      pattern_boundaries(hole, {view.lo() - margin, view.hi() + margin}, o);
+  if (drawn.empty())
     throw std::invalid_argument("the hole covers no part of the sheet as it lies now" +
                                 view.extent());
-  PatternSpec joined = union_spec(std::move(outer));
-  if (inner.empty()) return joined;
-  return difference_spec({std::move(joined), union_spec(std::move(inner))});
+  const std::vector<int> depth = nesting(drawn);
+  std::vector<PatternSpec> paper(drawn.size()), regions;
+  for (size_t i = 0; i < drawn.size(); ++i)
+    paper[i] = polygon_spec(on_frame(pull_back_polygon(view, drawn[i], spacing), m.stretch));
+  for (size_t i = 0; i < drawn.size(); ++i) {
+    if (depth[i] % 2 != 0) continue;
+    std::vector<PatternSpec> parts{paper[i]};
+    for (size_t j = 0; j < drawn.size(); ++j)
+      if (depth[j] == depth[i] + 1 && make_polygon(drawn[i])->contains(drawn[j].front()))
+        parts.push_back(paper[j]);
+    regions.push_back(parts.size() == 1 ? parts[0] : difference_spec(std::move(parts)));
+  }
+  return regions.size() == 1 ? regions[0] : union_spec(std::move(regions));
 }
 
 }  // namespace
@@ -57,16 +68,17 @@ SheetForm form_of(const Membrane& m) {
   return {m.sheet.model.reference, m.sheet.triangles, m.state.x};
 }
 
+bool moves_sheet(const ProtocolStep& step) {
+  const auto kind = step.kind();
+  const auto* load = step.as<LoadStep>();
+  return kind == ProtocolStep::Kind::release || kind == ProtocolStep::Kind::grow ||
+         kind == ProtocolStep::Kind::curvature_map ||
+         (load && load->gravity && *load->gravity != 0.0);
+}
+
 bool moved_before(const Scene& scene, size_t index) {
-  for (size_t k = 0; k < index && k < scene.protocol.size(); ++k) {
-    const ProtocolStep& s = scene.protocol[k];
-    const auto kind = s.kind();
-    const auto* load = s.as<LoadStep>();
-    if (kind == ProtocolStep::Kind::release || kind == ProtocolStep::Kind::grow ||
-        kind == ProtocolStep::Kind::curvature_map ||
-        (load && load->gravity && *load->gravity != 0.0))
-      return true;
-  }
+  for (size_t k = 0; k < index && k < scene.protocol.size(); ++k)
+    if (moves_sheet(scene.protocol[k])) return true;
   return false;
 }
 
@@ -82,7 +94,8 @@ bool any_cut_remeshes(const Scene& scene) {
   return false;
 }
 
-ProtocolStep cut_on_paper(const Membrane& m, const ProtocolStep& step, double spacing) {
+ProtocolStep cut_on_paper(const Membrane& m, const ProtocolStep& step, double spacing,
+                          double tolerance) {
   ProtocolStep out = step;
   CutStep& cut = std::get<CutStep>(out.step);
   const TopView view(m);
@@ -95,7 +108,7 @@ ProtocolStep cut_on_paper(const Membrane& m, const ProtocolStep& step, double sp
   }
   if (cut.hole) {
     try {
-      cut.hole_spec = hole_on_paper(view, m, *cut.hole, spacing, 2e-5);
+      cut.hole_spec = hole_on_paper(view, m, *cut.hole, spacing, tolerance);
     } catch (const std::invalid_argument& e) {
       throw InputError(step.pointer + "/hole", e.what());
     }

@@ -130,9 +130,10 @@ std::vector<GridLevel> multilevel_meshes(const Scene& scene) {
   std::vector<GridLevel> levels{own};
   const int coarsest = scene.simulation.multilevel;
   if (coarsest <= 0 || !scene.simulation.is_static() || !last_step_is_solved(scene)) return levels;
-  // A last step that cuts the moved sheet meshes it again (cut_after_motion.hpp): a coarser
-  // mesh's form has nowhere to go until the cut is pulled back on this one.
-  if (cut_remeshes(scene, scene.protocol.size() - 1)) return levels;
+  // A cut after the sheet moved is pulled back through each mesh's own form (cut_after_motion.hpp):
+  // the coarser mesh's hole is not the finer one's, and its form carried over can fold a finer
+  // mesh's triangles flat at the hole's rim (measured: NaN forces at the first iteration).
+  if (any_cut_remeshes(scene)) return levels;
   const double longer = std::max(scene.grid.width, scene.grid.height);
   for (;;) {
     GridLevel next = levels.front();

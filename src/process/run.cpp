@@ -6,7 +6,7 @@
 #include <string>
 #include <variant>
 
-#include "membra/core/input_error.hpp"
+#include "membra/geometry/mesh_prolongation.hpp"
 #include "membra/process/explore.hpp"
 #include "membra/process/grid_resolution.hpp"
 #include "membra/process/multilevel.hpp"
@@ -66,7 +66,6 @@ ProgressFn SceneRun::whole_run(ProgressFn progress) const {
 SceneRun::SceneRun(const Scene& scene, ProgressFn progress)
     : scene_(&scene), progress_(whole_run(std::move(progress))) {
   r_.prepared = prepare_scene(scene);
-  keep_forms_ = any_cut_remeshes(scene);
   recorder_ = FrameRecorder{scene.output.frames, &r_.frames};
 }
 
@@ -87,42 +86,71 @@ void SceneRun::start_budget() {
                                std::chrono::duration<double>(scene_->simulation.max_seconds));
 }
 
-size_t SceneRun::index_of(const ProtocolStep& step) const {
-  const auto& steps = scene_->protocol;
-  for (size_t k = 0; k < steps.size(); ++k)
-    if (&steps[k] == &step || (!step.pointer.empty() && steps[k].pointer == step.pointer)) return k;
-  return applied_;
+namespace {
+
+// The frames recorded so far, carried to the new mesh (those of an earlier mesh, before a slit
+// or a hole changed it, are left empty: drawn blank, as run_pictures does with such frames).
+void carry_frames(std::vector<Frame>& frames, const SheetForm& from, const Sheet& to) {
+  const Eigen::Index n = from.x.cols();
+  const auto carry = [&](const Points& values) {
+    return prolongate_on_mesh(from.reference, from.triangles, values, to.model.reference,
+                              to.triangles);
+  };
+  for (Frame& f : frames) {
+    if (f.x.cols() != n) {
+      f = Frame{};
+      continue;
+    }
+    Points stress = Points::Zero(3, n);
+    if (static_cast<Eigen::Index>(f.stress.size()) == n)
+      stress.row(0) = Eigen::Map<const Eigen::RowVectorXd>(f.stress.data(), n);
+    const Points carried = carry(stress);
+    f.x = carry(f.x);
+    f.stress.resize(static_cast<size_t>(carried.cols()));
+    for (Eigen::Index p = 0; p < carried.cols(); ++p)
+      f.stress[static_cast<size_t>(p)] = carried(0, p);
+  }
 }
 
-void SceneRun::remesh_at(size_t index) {
-  if (forms_.size() != index)
-    throw InputError(scene_->protocol[index].pointer,
-                     "a cut after the sheet has moved is carried over to its new mesh only when "
-                     "the steps before it ran in order, each once");
+}  // namespace
+
+ProtocolStep SceneRun::remesh_for(const ProtocolStep& given) {
+  Membrane& m = r_.prepared.membrane;
+  const ProtocolStep cut =
+      cut_on_paper(m, given, 0.25 * scene_max_edge(*scene_), scene_->mesh.tolerance);
   auto own = std::make_unique<Scene>(*scene_);
-  const double spacing = 0.25 * scene_max_edge(*scene_);
-  own->protocol[index] = cut_on_paper(r_.prepared.membrane, scene_->protocol[index], spacing);
-  PreparedScene p = remesh_for_cut(*own, index, forms_, form_of(r_.prepared.membrane));
+  own->protocol = applied_steps_;
+  own->protocol.push_back(cut);
+  // The scene's steps after this one, so that their patterns are meshed as they were at the
+  // start (a step made by hand has none).
+  const auto& steps = scene_->protocol;
+  for (size_t k = 0; k < steps.size(); ++k)
+    if (&steps[k] == &given || (!given.pointer.empty() && steps[k].pointer == given.pointer)) {
+      own->protocol.insert(own->protocol.end(), steps.begin() + static_cast<long>(k) + 1,
+                           steps.end());
+      break;
+    }
+  const SheetForm now = form_of(m);
+  PreparedScene p = remesh_for_cut(*own, applied_steps_.size(), forms_, now);
   p.deadline = r_.prepared.deadline;
   r_.prepared = std::move(p);
+  carry_frames(r_.frames, now, r_.prepared.membrane.sheet);
   own_scene_ = std::move(own);
   scene_ = own_scene_.get();
+  return cut;
 }
 
 bool SceneRun::apply(const ProtocolStep& given, const Points* start) {
   if (diverged()) throw std::logic_error("the run diverged: no further step can be applied");
   start_budget();
-  const size_t index = index_of(given);
-  if (keep_forms_) forms_.push_back(form_of(r_.prepared.membrane));
-  const bool remesh = cut_remeshes(*scene_, index);
+  const auto* drawn = given.as<CutStep>();
+  const bool continuum = r_.prepared.membrane.sheet.continuum();
+  const bool remesh = continuum && drawn && !drawn->on_paper && moved_;
   if (remesh && start) throw std::logic_error("a cut that re-meshes is not solved from a form");
-  if (remesh) {
-    forms_.pop_back();  // the form before the cut is carried over as the present one
-    remesh_at(index);
-    forms_.push_back(form_of(r_.prepared.membrane));
-  }
-  const ProtocolStep& step = remesh ? scene_->protocol[index] : given;
-  ++applied_;
+  const ProtocolStep step = remesh ? remesh_for(given) : given;
+  if (continuum) forms_.push_back(form_of(r_.prepared.membrane));
+  applied_steps_.push_back(step);
+  moved_ = moved_ || moves_sheet(step);
   StepEffects effects;
   const Path path = apply_step(r_.prepared, step, effects);
   for (StressFeature& f : effects.features) r_.features.push_back(std::move(f));

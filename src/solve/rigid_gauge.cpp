@@ -1,51 +1,45 @@
 #include "membra/solve/rigid_gauge.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace membra {
 namespace {
 
-// Ties (a symmetric sheet has several particles equally near the centre or far from it) go to
-// the lowest index: a choice within round-off of another would flip with the last digits of the
-// form, and with it the held coordinates (and a cached Newton setup, which fits only its own).
-// `tie` is the squared distance below which two candidates count as equal.
-bool better(double d, double best, double tie, bool larger) {
-  return larger ? d > best + tie : d < best - tie;
+// The particle whose value(p) is the largest (or the smallest); ties go to the lowest index among
+// those within 1e-4 of the best, relative. A symmetric sheet has several particles equally near
+// its centre or far from it, and with a strict comparison the choice followed the last digits of
+// the form: the held coordinates changed from one solve to the next (and a cached Newton setup,
+// which fits only its own, was built again).
+template <class Value>
+int first_best(Eigen::Index n, Value value, bool largest) {
+  double best = largest ? -1e300 : 1e300;
+  for (Eigen::Index p = 0; p < n; ++p)
+    best = largest ? std::max(best, value(p)) : std::min(best, value(p));
+  const double slack = 1e-4 * std::abs(best);
+  for (Eigen::Index p = 0; p < n; ++p)
+    if (largest ? value(p) >= best - slack : value(p) <= best + slack) return static_cast<int>(p);
+  return 0;
 }
 
 // a, the particle nearest the centre, and b, the one farthest from a, of positions y.
-std::pair<int, int> centre_and_far(const Points& y, double tie) {
+std::pair<int, int> centre_and_far(const Points& y) {
   const Vec3 centre = y.rowwise().mean();
-  int a = 0, b = 0;
-  double best_a = 1e300, best_b = -1.0;
-  for (Eigen::Index p = 0; p < y.cols(); ++p) {
-    const double d = (y.col(p) - centre).squaredNorm();
-    if (better(d, best_a, tie, false)) best_a = d, a = static_cast<int>(p);
-  }
-  for (Eigen::Index p = 0; p < y.cols(); ++p) {
-    const double d = (y.col(p) - y.col(a)).squaredNorm();
-    if (better(d, best_b, tie, true)) best_b = d, b = static_cast<int>(p);
-  }
+  const int a = first_best(
+      y.cols(), [&](Eigen::Index p) { return (y.col(p) - centre).squaredNorm(); }, false);
+  const int b = first_best(
+      y.cols(), [&](Eigen::Index p) { return (y.col(p) - y.col(a)).squaredNorm(); }, true);
   return {a, b};
-}
-
-// Squared distances closer than 1e-4 of the sheet's squared extent are ties: a particle that
-// near the centre, or that near the farthest, holds the gauge as well (a Newton step moves a
-// symmetric sheet's corners apart by far more than round-off).
-double tie_of(const Points& x) {
-  return 1e-4 * (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).squaredNorm();
 }
 
 }  // namespace
 
 RigidGauge rigid_gauge(const Points& x) {
-  const double tie = tie_of(x);
-  const auto [a, b] = centre_and_far(x, tie);
-  int c = 0;
-  double best_c = -1.0;
+  const auto [a, b] = centre_and_far(x);
   const Vec3 e1 = (x.col(b) - x.col(a)).normalized();
-  for (Eigen::Index p = 0; p < x.cols(); ++p) {
-    const double d = (x.col(p) - x.col(a)).cross(e1).squaredNorm();
-    if (better(d, best_c, tie, true)) best_c = d, c = static_cast<int>(p);
-  }
+  const int c = first_best(
+      x.cols(), [&](Eigen::Index p) { return (x.col(p) - x.col(a)).cross(e1).squaredNorm(); },
+      true);
   RigidGauge g;
   const Vec3 e3 = e1.cross(x.col(c) - x.col(a)).normalized();
   if (e1.allFinite() && e3.allFinite()) {
@@ -60,7 +54,7 @@ RigidGauge rigid_gauge(const Points& x) {
 RigidGauge planar_gauge(const Points& x) {
   Points flat = x;
   flat.row(2).setZero();  // a and b chosen as seen from above
-  const auto [a, b] = centre_and_far(flat, tie_of(flat));
+  const auto [a, b] = centre_and_far(flat);
   RigidGauge g;
   const Vec3 e1 = (flat.col(b) - flat.col(a)).normalized();
   if (e1.allFinite()) {

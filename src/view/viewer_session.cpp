@@ -9,6 +9,7 @@
 #include "membra/io/scene_writer.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/pins.hpp"
+#include "membra/process/cut_after_motion.hpp"
 #include "membra/process/grid_resolution.hpp"
 #include "membra/process/steps.hpp"
 #include "membra/solve/solver.hpp"
@@ -337,9 +338,10 @@ std::string ViewerSession::apply_scene_step(const ProtocolStep& step) {
       // (process/cut_after_motion.hpp), which the live session's sheet and undo history do not
       // follow.
       if (step.kind() == ProtocolStep::Kind::cut && prepared_.membrane.sheet.continuum() &&
-          stage_ == Stage::released)
+          (stage_ == Stage::released ||
+           std::any_of(log_.begin(), log_.end(), [](const auto& s) { return moves_sheet(s); })))
         return "on the continuum model the viewer cuts the sheet on its frame only; `membra run` "
-               "cuts it after the release (it meshes the sheet again)";
+               "cuts it after it has moved (it meshes the sheet again)";
       // cut, load, grow, add_springs, curvature_map: as the runner applies them.
       push_undo();
       try {

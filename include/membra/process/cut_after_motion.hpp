@@ -23,8 +23,12 @@ struct SheetForm {
 };
 SheetForm form_of(const Membrane& m);
 
-// Whether the sheet has left its frame before protocol step `index`: a release, a growth, a
-// curvature map or gravity came first.
+// Whether `step` moves the sheet off its frame: a release, a growth, a curvature map or gravity.
+// (Added springs that shorten move it on the frame too; a cut after them is still pulled back by
+// the frame's stretch.)
+bool moves_sheet(const ProtocolStep& step);
+
+// Whether the sheet has left its frame before protocol step `index`.
 bool moved_before(const Scene& scene, size_t index);
 
 // Whether protocol step `index` of a continuum scene is a cut that must be pulled back and
@@ -35,9 +39,11 @@ bool cut_remeshes(const Scene& scene, size_t index);
 bool any_cut_remeshes(const Scene& scene);
 
 // The cut pulled back through the sheet `m` as it lies: on_paper, its line and hole at the
-// natural-sheet points times the frame's stretch, sampled at most `spacing` (m) apart. Throws
-// InputError at the step's /line or /hole when it does not lie on the sheet.
-ProtocolStep cut_on_paper(const Membrane& m, const ProtocolStep& step, double spacing);
+// natural-sheet points times the frame's stretch, sampled at most `spacing` (m) apart, a hole's
+// outlines traced to the chord `tolerance` (m). Throws InputError at the step's /line or /hole
+// when it does not lie on the sheet.
+ProtocolStep cut_on_paper(const Membrane& m, const ProtocolStep& step, double spacing,
+                          double tolerance);
 
 // The membrane of `scene` (whose protocol holds the pulled-back cut at `cut_index`) carried to
 // the cut: each earlier step applied at once from its starting form (`forms[k]`, carried over

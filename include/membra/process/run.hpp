@@ -40,21 +40,20 @@ class SceneRun {
  private:
   bool record(StepReport step);
   void start_budget();
-  // The step's place in the protocol: the same step, or the one its pointer names, or the next
-  // one in order (a step made by hand).
-  size_t index_of(const ProtocolStep& step) const;
-  // A cut after the sheet moved (cut_after_motion.hpp): pulled back, the scene meshed again with
-  // it and the run carried over; the scene the run follows is from then on its own copy.
-  void remesh_at(size_t index);
+  // A cut after the sheet moved (cut_after_motion.hpp): pulled back, the sheet meshed again with
+  // it and the run so far carried over; returns the cut as pulled back. The scene the run follows
+  // is from then on its own copy, whose protocol is the steps applied, this cut and the scene's
+  // steps after it.
+  ProtocolStep remesh_for(const ProtocolStep& given);
   // The caller's progress with run_done filled in: the steps recorded so far and the current
   // one's step_done, each step weighted by its increments (1 without a path).
   ProgressFn whole_run(ProgressFn progress) const;
   const Scene* scene_;                // the scene as given, or own_scene_
   std::unique_ptr<Scene> own_scene_;  // with the cuts pulled back so far
   ProgressFn progress_;
-  size_t applied_ = 0;            // steps applied so far
-  bool keep_forms_ = false;       // a cut after the sheet moved is to come
-  std::vector<SheetForm> forms_;  // the form at the start of each step (keep_forms_)
+  std::vector<ProtocolStep> applied_steps_;  // as applied (a cut after motion pulled back)
+  std::vector<SheetForm> forms_;  // the continuum's form at the start of each applied step
+  bool moved_ = false;            // a step has moved the sheet off its frame
   RunResult r_;
   FrameRecorder recorder_;
   std::function<double(const Vec2&)> curvature_field_;  // of the last curvature_map step
