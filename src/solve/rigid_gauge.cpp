@@ -35,7 +35,9 @@ std::pair<int, int> centre_and_far(const Points& y) {
 }  // namespace
 
 RigidGauge rigid_gauge(const Points& x) {
-  const auto [a, b] = centre_and_far(x);
+  // Not a structured binding: clang 14 (the sanitized build's) cannot capture one in a lambda.
+  const std::pair<int, int> ab = centre_and_far(x);
+  const int a = ab.first, b = ab.second;
   const Vec3 e1 = (x.col(b) - x.col(a)).normalized();
   const int c = first_best(
       x.cols(), [&](Eigen::Index p) { return (x.col(p) - x.col(a)).cross(e1).squaredNorm(); },
