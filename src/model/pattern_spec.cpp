@@ -57,6 +57,13 @@ PatternSpec circle_spec(const Vec2& center, double radius) {
   return s;
 }
 
+PatternSpec polygon_spec(std::vector<Vec2> points) {
+  PatternSpec s;
+  s.kind = PatternSpec::Kind::polygon;
+  s.points = std::move(points);
+  return s;
+}
+
 PatternSpec union_spec(std::vector<PatternSpec> parts) {
   PatternSpec s;
   s.kind = PatternSpec::Kind::union_of;

@@ -27,13 +27,6 @@ std::vector<int> nesting(const std::vector<Polygon2>& polys) {
   return depth;
 }
 
-PatternSpec polygon_spec(std::vector<Vec2> points) {
-  PatternSpec spec;
-  spec.kind = PatternSpec::Kind::polygon;
-  spec.points = std::move(points);
-  return spec;
-}
-
 // The hole's outlines where the sheet lies, pulled back, as the region they bound by the
 // even-odd rule: each outline at an even depth minus the outlines directly inside it (so a ring
 // around a disk keeps the disk), at paper points times the stretch.

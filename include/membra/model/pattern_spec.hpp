@@ -37,8 +37,9 @@ struct PatternSpec {
 // hyperbola branches extend and an image without a size is stretched.
 PatternPtr make_pattern(const PatternSpec& spec, const Vec2& frame_size);
 
-// A circle (the viewer's brush and hole), a union and a difference, as descriptions.
+// A circle (the viewer's brush and hole), a polygon, a union and a difference, as descriptions.
 PatternSpec circle_spec(const Vec2& center, double radius);
+PatternSpec polygon_spec(std::vector<Vec2> points);
 PatternSpec union_spec(std::vector<PatternSpec> parts);
 PatternSpec difference_spec(std::vector<PatternSpec> parts);
 
