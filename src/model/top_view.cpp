@@ -110,15 +110,19 @@ std::vector<Vec2> pull_back_line(const TopView& view, const std::vector<Vec2>& l
     sample_segment(line[k], line[k + 1], spacing, samples);
   samples.push_back(line.back());
   std::vector<Vec2> out, drawn;  // paper points and where each was drawn
-  const auto add = [&](const Vec2& q) {
-    const Vec2 p = *view.paper_at(q);
+  const auto add = [&](const Vec2& q, const Vec2& p) {
     if (!out.empty()) check_one_layer(view, drawn.back(), q, out.back(), p);
     out.push_back(p), drawn.push_back(q);
   };
+  const auto add_edge = [&](const Vec2& on, const Vec2& off) {
+    const Vec2 q = edge_between(view, on, off);
+    add(q, *view.paper_at(q));
+  };
   bool left = false;  // the line has been on the sheet and run off it
   for (size_t k = 0; k < samples.size(); ++k) {
-    if (!view.paper_at(samples[k])) {
-      if (!out.empty() && !left) add(edge_between(view, samples[k - 1], samples[k])), left = true;
+    const std::optional<Vec2> p = view.paper_at(samples[k]);
+    if (!p) {
+      if (!out.empty() && !left) add_edge(samples[k - 1], samples[k]), left = true;
       continue;
     }
     if (left)
@@ -126,8 +130,8 @@ std::vector<Vec2> pull_back_line(const TopView& view, const std::vector<Vec2>& l
           "the cut leaves the sheet as it lies now (seen from above) and comes back onto it; "
           "draw one cut per piece" +
           view.extent());
-    if (out.empty() && k > 0) add(edge_between(view, samples[k], samples[k - 1]));
-    add(samples[k]);
+    if (out.empty() && k > 0) add_edge(samples[k], samples[k - 1]);
+    add(samples[k], *p);
   }
   if (out.size() < 2)
     throw std::invalid_argument("the cut does not cross the sheet as it lies now" + view.extent());

@@ -18,12 +18,13 @@ std::vector<Vec2> on_frame(std::vector<Vec2> paper, const Vec2& stretch) {
   return paper;
 }
 
-// The polygons nested `depth` deep in the others (the number of others holding a vertex).
-std::vector<int> nesting(const std::vector<Polygon2>& polys) {
+// Each polygon's depth: the number of the others holding one of its vertices.
+std::vector<int> nesting(const std::vector<PatternPtr>& shapes,
+                         const std::vector<Polygon2>& polys) {
   std::vector<int> depth(polys.size(), 0);
   for (size_t i = 0; i < polys.size(); ++i)
     for (size_t j = 0; j < polys.size(); ++j)
-      if (i != j && make_polygon(polys[j])->contains(polys[i].front())) ++depth[i];
+      if (i != j && shapes[j]->contains(polys[i].front())) ++depth[i];
   return depth;
 }
 
@@ -40,7 +41,9 @@ PatternSpec hole_on_paper(const TopView& view, const Membrane& m, const Pattern&
   if (drawn.empty())
     throw std::invalid_argument("the hole covers no part of the sheet as it lies now" +
                                 view.extent());
-  const std::vector<int> depth = nesting(drawn);
+  std::vector<PatternPtr> shapes;  // each outline's inside, built once
+  for (const Polygon2& poly : drawn) shapes.push_back(make_polygon(poly));
+  const std::vector<int> depth = nesting(shapes, drawn);
   std::vector<PatternSpec> paper(drawn.size()), regions;
   for (size_t i = 0; i < drawn.size(); ++i)
     paper[i] = polygon_spec(on_frame(pull_back_polygon(view, drawn[i], spacing), m.stretch));
@@ -48,7 +51,7 @@ PatternSpec hole_on_paper(const TopView& view, const Membrane& m, const Pattern&
     if (depth[i] % 2 != 0) continue;
     std::vector<PatternSpec> parts{paper[i]};
     for (size_t j = 0; j < drawn.size(); ++j)
-      if (depth[j] == depth[i] + 1 && make_polygon(drawn[i])->contains(drawn[j].front()))
+      if (depth[j] == depth[i] + 1 && shapes[i]->contains(drawn[j].front()))
         parts.push_back(paper[j]);
     regions.push_back(parts.size() == 1 ? parts[0] : difference_spec(std::move(parts)));
   }
