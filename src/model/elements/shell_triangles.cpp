@@ -13,6 +13,7 @@
 #include "membra/model/material.hpp"
 #include "membra/model/pattern.hpp"
 #include "membra/model/psd_projection.hpp"
+#include "membra/model/sheet.hpp"
 
 namespace membra {
 
