@@ -103,7 +103,9 @@ SolveReport StaticRelaxation::advance(const Model& model, State& state, long ite
     compute_static_forces(model, x, f);
     ++r.iterations;
     ++r.force_passes;
-    if (k % o.check_every != 0 && k != iterations) continue;
+    // The clock every iteration: on a large mesh check_every iterations outlast a viewer's slice.
+    const bool out_of_time = o.max_seconds > 0.0 && seconds() > o.max_seconds;
+    if (k % o.check_every != 0 && k != iterations && !out_of_time) continue;
 
     const double res = max_free_force(model, f);
     r.residual = res;
@@ -115,8 +117,7 @@ SolveReport StaticRelaxation::advance(const Model& model, State& state, long ite
       return r;
     }
     if (o.progress) o.progress({"", k, iterations, r.residual_relative, seconds(), -1.0, -1.0});
-    if (r.residual_relative <= o.tolerance) break;
-    if (o.max_seconds > 0.0 && seconds() > o.max_seconds) break;
+    if (r.residual_relative <= o.tolerance || out_of_time) break;
   }
   if (r.iterations == 0) {
     const double res = max_free_force(model, f);

@@ -6,8 +6,36 @@
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/fitted_curvature.hpp"
 #include "membra/measure/stress.hpp"
+#include "membra/model/triangle_resin.hpp"
 
 namespace membra {
+
+namespace {
+
+// Each particle's share of resin: the mean over its springs' resin fractions on the lattice, over
+// its triangles on the continuum (a triangle is resin or not; the continuum has no springs).
+std::vector<double> resin_share(const Sheet& sheet) {
+  const auto n = static_cast<size_t>(sheet.model.num_particles());
+  std::vector<double> share(n, 0.0), count(n, 0.0);
+  const auto add = [&](int p, double r) {
+    share[static_cast<size_t>(p)] += r;
+    count[static_cast<size_t>(p)] += 1.0;
+  };
+  if (sheet.continuum()) {
+    const std::vector<bool> resin = triangle_resin(sheet);
+    for (size_t t = 0; t < sheet.triangles.size(); ++t)
+      for (int p : sheet.triangles[t]) add(p, resin[t] ? 1.0 : 0.0);
+  } else {
+    const Springs& s = sheet.model.springs;
+    for (int i = 0; i < s.size(); ++i)
+      for (int p : {s.a[i], s.b[i]}) add(p, s.resin_fraction[static_cast<size_t>(i)]);
+  }
+  for (size_t p = 0; p < n; ++p)
+    if (count[p] > 0.0) share[p] /= count[p];
+  return share;
+}
+
+}  // namespace
 
 const char* color_mode_name(ColorMode mode) {
   switch (mode) {
@@ -54,22 +82,8 @@ ColorField color_field(const ViewerSession& session, ColorMode mode) {
       break;
     }
     case ColorMode::pattern: {
-      f.values.assign(static_cast<size_t>(model.num_particles()), 0.0);
+      f.values = resin_share(m.sheet);
       const PatternPtr pending = session.resin_pattern();
-      const std::vector<double>& resin = model.springs.resin_fraction;
-      const bool impregnated =
-          std::any_of(resin.begin(), resin.end(), [](double r) { return r > 0.0; });
-      if (impregnated) {
-        std::vector<double> count(f.values.size(), 0.0);
-        const Springs& s = model.springs;
-        for (int i = 0; i < s.size(); ++i)
-          for (int p : {s.a[i], s.b[i]}) {
-            f.values[p] += resin[i];
-            count[p] += 1.0;
-          }
-        for (size_t p = 0; p < f.values.size(); ++p)
-          if (count[p] > 0.0) f.values[p] /= count[p];
-      }
       if (pending)  // what the next impregnate would add shows too
         for (int p = 0; p < model.num_particles(); ++p)
           if (pending->contains(x.col(p).head<2>())) f.values[p] = 1.0;

@@ -179,6 +179,7 @@ TEST(ShellTriangles, NoConfigurationStoresANegativeEnergy) {
   for (int i = 0; i < s.size(); i += 3)
     s.resin[static_cast<size_t>(i)] = {s.latex[static_cast<size_t>(i)].metric_inverse,
                                        s.latex[static_cast<size_t>(i)].area, 500.0 * kD, 1.0 / 3.0};
+  s.invalidate();  // the members written directly
   std::mt19937_64 rng(3);
   std::normal_distribution<double> g(0.0, 1.0);
   for (int trial = 0; trial < 200; ++trial) {
@@ -257,6 +258,7 @@ TEST(ShellTriangles, GradientAndHessianMatchFiniteDifferences) {
     const auto stiff = [&](int i) {
       s.resin[static_cast<size_t>(i)] = {s.latex[static_cast<size_t>(i)].metric_inverse,
                                          s.latex[static_cast<size_t>(i)].area, 300.0 * kD, 0.3};
+      s.invalidate();
     };
     if (trial == 4) {
       stiff(s.neighbour[0][1]);
@@ -284,6 +286,7 @@ TEST(ShellTriangles, GradientAndHessianMatchFiniteDifferences) {
     // edges' slopes then gain an offset).
     for (auto& c : s.coat_curvature) c = 2e-3 * Eigen::Vector3d(u(rng), u(rng), u(rng));
     s.coat_share = 0.7;
+    s.invalidate();
     expect_kernel_matches_finite_differences(s, x, "coated shell triangle");
   }
 }
@@ -306,6 +309,7 @@ TEST(ShellTriangles, APatchBentToItsCoatsCurvatureStoresNothing) {
       s.coat_curvature[static_cast<size_t>(i)] = Eigen::Vector3d(ii(0, 0), ii(0, 1), ii(1, 1));
     }
     s.coat_share = 1.0;
+    s.invalidate();
     double area = 0.0;
     for (const PlateLayer& l : s.latex) area += l.area;
     // Flat, the rim triangles store less: their free edges' slopes relax towards II0.
@@ -339,6 +343,7 @@ TEST(ShellTriangles, ResinOnOneSideLeavesTheKinkToTheLatex) {
   EXPECT_NEAR(s.energy(0, folded) / latex_only, 0.5, 0.05);  // each about half
   ShellTriangles coated = s;
   coated.resin[0] = {s.latex[0].metric_inverse, s.latex[0].area, 1000.0 * kD, 1.0 / 3.0};
+  coated.invalidate();                                           // the copy carries s's plans
   EXPECT_EQ(coated.edges(0)[2], ShellTriangles::Edge::free);     // the resin's edge
   EXPECT_EQ(coated.edges(1)[2], ShellTriangles::Edge::clamped);  // the latex's edge
   EXPECT_NEAR(coated.energy(0, folded), 0.0, 1e-9 * latex_only);

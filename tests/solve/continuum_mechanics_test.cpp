@@ -125,6 +125,7 @@ double plate_deflection(const ContinuumSpec& spec, double g, bool clamp, Held he
       r.d *= 1000.0;
     }
   }
+  shells.invalidate();  // the resin written directly
   m.gravity = Vec3(0.0, 0.0, -g);
   State st = State::at_rest(m);
   NewtonOptions no;

@@ -88,6 +88,23 @@ TEST(ViewerSession, PaintedResinLiesUnderTheBrushAndEraseRemovesIt) {
     EXPECT_EQ(again->contains(q), p->contains(q)) << q.transpose();
 }
 
+// On the continuum (no springs) the pattern colour reads the impregnated triangles: all resin at
+// the painted disc's centre, none far from it.
+TEST(ViewerSession, TheContinuumsPatternColourShowsItsResinTriangles) {
+  Scene scene = small_scene();
+  scene.model = SheetModel::continuum;
+  ViewerSession s(scene);
+  ASSERT_EQ(s.stretch(), "");
+  ASSERT_EQ(s.paint(mm(75, 50), 20 * units::mm), "");
+  ASSERT_EQ(s.impregnate(), "");
+  ASSERT_FALSE(s.resin_pattern());  // applied: nothing pending shows in the colour
+  const ColorField f = color_field(s, ColorMode::pattern);
+  EXPECT_EQ(f.values[static_cast<size_t>(s.nearest_particle(mm(75, 50)))], 1.0);
+  EXPECT_EQ(f.values[static_cast<size_t>(s.nearest_particle(mm(140, 90)))], 0.0);
+  const auto resin = std::count(f.values.begin(), f.values.end(), 1.0);
+  EXPECT_GT(resin, 10);
+}
+
 TEST(ViewerSession, UndoAndRedoRestoreTheMembraneExactly) {
   ViewerSession s(small_scene());
   ASSERT_EQ(s.stretch(), "");

@@ -308,6 +308,7 @@ void ShellTriangles::add_mesh(const std::vector<std::array<int, 3>>& triangles,
 }
 
 void ShellTriangles::link_neighbours() {
+  invalidate();  // every change of the mesh ends here
   for (size_t t = 0; t < v.size(); ++t)
     for (size_t k = 0; k < 3; ++k) {
       const int o = neighbour[t][k];
@@ -484,8 +485,17 @@ Eigen::Matrix<double, 36, 36> stencil_hessian(const ShellTriangles::Plan& pl,
 
 }  // namespace
 
+const ShellTriangles::Plan& ShellTriangles::planned(int i) const {
+  const std::vector<Plan>& all = plans_.get([this] {
+    std::vector<Plan> out(static_cast<size_t>(size()));
+    for (int k = 0; k < size(); ++k) out[static_cast<size_t>(k)] = plan(k);
+    return out;
+  });
+  return all[static_cast<size_t>(i)];
+}
+
 double ShellTriangles::energy(int i, const Points& x) const {
-  const Plan pl = plan(i);
+  const Plan& pl = planned(i);
   const ShellState st = state_of(pl, v[static_cast<size_t>(i)], x);
   return st.ii.dot(pl.form * st.ii);
 }
@@ -494,7 +504,7 @@ void ShellTriangles::add_forces(const Points& x, const Points*, int begin, int e
                                 Points& f) const {
   for (int i = begin; i < end; ++i) {
     if (!active(i)) continue;
-    const Plan pl = plan(i);
+    const Plan& pl = planned(i);
     const auto& p = v[static_cast<size_t>(i)];
     const ShellState st = state_of(pl, p, x);
     const Eigen::Matrix<double, 15, 1> g = reduced_gradient(st);
@@ -508,7 +518,7 @@ void ShellTriangles::add_forces(const Points& x, const Points*, int begin, int e
 }
 
 Eigen::Matrix<double, 36, 36> ShellTriangles::hessian(int i, const Points& x, bool project) const {
-  const Plan pl = plan(i);
+  const Plan& pl = planned(i);
   const ShellState st = state_of(pl, v[static_cast<size_t>(i)], x);
   Eigen::Matrix<double, 15, 15> h = reduced_hessian(pl, st);
   h = 0.5 * (h + h.transpose());
@@ -527,6 +537,7 @@ void ShellTriangles::add_stiffness_estimate(const Points& x, std::vector<double>
 }
 
 void ShellTriangles::update(const ReleaseLevel& release) {
+  invalidate();
   coat_share = release.releasing ? 1.0 - release.level : 0.0;
   for (int i = 0; i < size(); ++i) {
     const auto k = static_cast<size_t>(i);
@@ -542,6 +553,7 @@ void ShellTriangles::begin_release(const Points& x) {
 }
 
 int ShellTriangles::impregnate(const Impregnation& at) {
+  invalidate();
   const double d = bending_stiffness(at.resin);
   const double per_strain =
       at.bilayer ? bilayer_curvature_per_strain(at.sheet.material, at.resin) : 0.0;
@@ -569,6 +581,7 @@ int ShellTriangles::impregnate(const Impregnation& at) {
 
 void ShellTriangles::grow(const std::vector<LocalGrowth>& g, const Points& paper, double exponent,
                           const ReleaseLevel& release) {
+  invalidate();
   for (size_t k = 0; k < v.size(); ++k) {
     if (g[k].none()) continue;
     latex[k].area *= grow_metrics(g[k], paper, v[k][0], v[k][1], v[k][2], exponent,

@@ -29,6 +29,7 @@
 #include <Eigen/Core>
 
 #include "membra/model/elements/element_set.hpp"
+#include "membra/model/elements/lazy_table.hpp"
 #include "membra/model/elements/membrane_triangles.hpp"
 #include "membra/model/elements/set_context.hpp"
 
@@ -143,8 +144,15 @@ struct ShellTriangles {
     Eigen::Vector3d shift = Eigen::Vector3d::Zero();
   };
   Plan plan(int i) const;
+  // plan(i) as built once for every triangle after the last change of the rest state (the
+  // kernels read it on every pass). Call invalidate() after writing the members above directly;
+  // the member functions that change them do.
+  const Plan& planned(int i) const;
+  void invalidate() { plans_.clear(); }
 
  private:
+  LazyTable<Plan> plans_;
+
   // Slots 6..11 from each neighbour's far corners (after the mesh, a filter, a carry or a split).
   void link_neighbours();
   // The slot of triangle i's stencil that holds particle id, or -1.
