@@ -51,7 +51,7 @@ SolveReport solve_scene_step(const Scene& scene, const PreparedScene& p, State& 
   o.stop_when_converged = sim.stop_when_converged;
   o.newton_cache = std::move(newton_cache);
   o.tangent_correction = sim.tangent_correction;
-  if (p.deadline) {  // what is left of the run's budget; a spent budget stops at the first check
+  if (p.deadline) {  // what is left of the run's budget; a spent budget stops the solve soon
     const double left =
         std::chrono::duration<double>(*p.deadline - std::chrono::steady_clock::now()).count();
     o.max_seconds = std::max(left, 1e-9);

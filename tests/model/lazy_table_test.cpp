@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "element_checks.hpp"
@@ -33,7 +34,10 @@ TEST(LazyTable, BuildsOnceUntilClearedAndCopiesCarryTheRows) {
   t.clear();
   EXPECT_EQ(t.get(build)[0], 1);
   EXPECT_EQ(builds.load(), 2);
-  EXPECT_EQ(copy.get(build)[1], 2);  // the copy is its own
+  EXPECT_EQ(copy.get(build)[1], 2);  // the copy keeps the rows it had
+  EXPECT_EQ(builds.load(), 2);
+  LazyTable<int> moved = std::move(t);  // takes the rows along; t builds again if used
+  EXPECT_EQ(moved.get(build)[0], 1);
   EXPECT_EQ(builds.load(), 2);
 }
 

@@ -62,6 +62,7 @@ TEST(ShellTriangles, CylindersSpheresAndSaddlesStoreKirchhoffsPlateEnergy) {
         const auto& n = inner.neighbour[static_cast<size_t>(i)];
         if (n[0] < 0 || n[1] < 0 || n[2] < 0) inner.latex[static_cast<size_t>(i)].area = 0.0;
       }
+      inner.invalidate();
       const double area = interior_area(s);
       for (double r : {0.4, 1.0}) {  // the saddle, a graph, is not isometric: r >> the patch
         const Bent b = bend(m.x, r);
@@ -101,6 +102,7 @@ TEST(ShellTriangles, OnAGridOfRightTrianglesTheyStoreThePlateEnergyToo) {
     const auto& nb = inner.neighbour[static_cast<size_t>(i)];
     if (nb[0] < 0 || nb[1] < 0 || nb[2] < 0) inner.latex[static_cast<size_t>(i)].area = 0.0;
   }
+  inner.invalidate();
   const double r = 0.4, unit = 0.5 * kD / (r * r) * interior_area(s);
   const Bent b = bend(m.x, r);
   EXPECT_NEAR(set_energy(inner, b.cylinder) / unit, 1.0, 0.03);

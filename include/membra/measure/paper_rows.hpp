@@ -4,6 +4,9 @@
 // with prefix sums along x, so a window costs two binary searches per row it crosses. Sums that
 // must see every particle (a window's angle defects cancel only in full, Gauss-Bonnet) or moments
 // that stand for a window's means and plane use it (global_curvature.cpp, shape.cpp).
+// Scattered particles (a continuum mesh: almost every y its own) are put in bands of about
+// sqrt(N) particles instead; a window takes a band's particles surely inside it from the prefix
+// sums and tests the rest one by one, so its sum is over exactly the same particles.
 #include <vector>
 
 #include <Eigen/Core>
@@ -14,8 +17,7 @@ namespace membra {
 
 class PaperRows {
  public:
-  // paper: one column per particle, on a grid (each row's particles share one y exactly);
-  // values: one column per particle, the quantities to sum.
+  // paper: one column per particle; values: one column per particle, the quantities to sum.
   PaperRows(const Points& paper, const Eigen::MatrixXd& values);
 
   // The sums of the values of the particles q with |paper_q - centre| <= radius (in x and y).
@@ -23,12 +25,19 @@ class PaperRows {
 
  private:
   struct Row {
-    std::vector<double> x;   // sorted
-    Eigen::MatrixXd prefix;  // column k: the sum of the values of the first k particles
+    double y_lo = 0.0, y_hi = 0.0;  // its particles' y (equal in a grid's row)
+    std::vector<double> x;          // sorted
+    std::vector<double> y;          // in the same order (banded rows)
+    Eigen::MatrixXd value;          // in the same order (banded rows)
+    Eigen::MatrixXd prefix;         // column k: the sum of the values of the first k particles
   };
-  std::vector<double> y_;  // the rows' y, ascending
+  void add_banded(const Row& r, const Vec2& centre, double radius, Eigen::VectorXd& sum) const;
+
+  std::vector<double> y_;  // the rows' lowest y, ascending
   std::vector<Row> rows_;
   Eigen::Index size_ = 0;  // values per particle
+  bool banded_ = false;
+  double band_ = 0.0;  // the bands' height (banded rows)
 };
 
 }  // namespace membra

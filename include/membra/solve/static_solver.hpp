@@ -13,8 +13,9 @@ struct StaticOptions {
   double tolerance = 1e-6;   // converged when max |static force| <= tolerance x force_scale
   double force_scale = 1.0;  // N, normally k_stretch x grid spacing
   long max_iterations = 500000;
-  int check_every = 25;       // iterations between convergence checks and progress calls
-  double max_seconds = 0.0;   // wall-time budget (0: none); stops unconverged when exceeded
+  int check_every = 25;  // iterations between convergence checks and progress calls
+  // Wall-time budget (0: none), read after every iteration; stops unconverged when exceeded.
+  double max_seconds = 0.0;
   bool uniform_mass = false;  // plain dynamic relaxation: one mass for all (the largest scaled
                               // one), as a baseline for the benchmarks
   std::function<void(const Progress&)> progress;
