@@ -23,8 +23,11 @@ PaperRows::PaperRows(const Points& paper, const Eigen::MatrixXd& values) : size_
   const Eigen::Index n = paper.cols();
   std::map<double, Members> by_y;
   for (Eigen::Index p = 0; p < n; ++p) by_y[paper(1, p)].push_back({paper(0, p), p});
-  // A grid has rows of many particles; scattered particles go into bands of about sqrt(n).
-  banded_ = n > 0 && static_cast<double>(by_y.size()) > 0.25 * static_cast<double>(n);
+  // A grid of n particles has about sqrt(n) rows; a mesh's vertices far more distinct y (a mesh
+  // graded along straight outlines shares some, so a count near n is not the test): those go
+  // into bands of about sqrt(n) particles.
+  const double rows_of_a_grid = std::sqrt(static_cast<double>(n));
+  banded_ = n > 0 && static_cast<double>(by_y.size()) > 4.0 * rows_of_a_grid;
   if (banded_) {
     const double y0 = by_y.begin()->first, y1 = by_y.rbegin()->first;
     band_ = std::max((y1 - y0) / std::ceil(std::sqrt(static_cast<double>(n))), 1e-300);

@@ -4,9 +4,9 @@
 // with prefix sums along x, so a window costs two binary searches per row it crosses. Sums that
 // must see every particle (a window's angle defects cancel only in full, Gauss-Bonnet) or moments
 // that stand for a window's means and plane use it (global_curvature.cpp, shape.cpp).
-// Scattered particles (a continuum mesh: almost every y its own) are put in bands of about
-// sqrt(N) particles instead; a window takes a band's particles surely inside it from the prefix
-// sums and tests the rest one by one, so its sum is over exactly the same particles.
+// Scattered particles (a continuum mesh: far more distinct y than a grid's rows) go in bands of
+// about sqrt(N) particles instead; a window takes a band's particles surely inside it from the
+// prefix sums and tests the rest one by one, so its sum is over exactly the same particles.
 #include <vector>
 
 #include <Eigen/Core>
