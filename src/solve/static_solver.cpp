@@ -31,6 +31,8 @@ void StaticRelaxation::reset(const Model& model, const Points& x) {
   n_positive_ = 0;
   iterations_ = 0;
   size0_ = std::max(sheet_extent(x), 1e-12);
+  f_.resize(3, 0);
+  x_of_f_.resize(3, 0);
 }
 
 namespace {
@@ -96,7 +98,13 @@ SolveReport StaticRelaxation::advance(const Model& model, State& state, long ite
   Points& x = state.x;
   Points f;
   SolveReport r;
-  compute_static_forces(model, x, f);
+  // The forces the last call ended with, where the sheet has not moved since (a viewer's slices:
+  // on a large mesh a slice is one iteration, and this pass was half of it). The model is the
+  // same until reset(), so they are the forces a new pass would give, bit for bit.
+  if (x_of_f_.cols() == x.cols() && x_of_f_ == x)
+    f = f_;
+  else
+    compute_static_forces(model, x, f);
   for (long k = 1; k <= iterations; ++k) {
     const long it = ++iterations_;
     fire_step(model, x, f, it);
@@ -127,6 +135,8 @@ SolveReport StaticRelaxation::advance(const Model& model, State& state, long ite
   r.converged = r.residual_relative <= o.tolerance;
   r.wall_seconds = seconds();
   r.message = summary_message("static", r, o.tolerance);
+  f_ = std::move(f);
+  x_of_f_ = x;
   return r;
 }
 

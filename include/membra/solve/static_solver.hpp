@@ -26,7 +26,8 @@ struct StaticOptions {
 class StaticRelaxation {
  public:
   StaticRelaxation(const Model& model, const Points& x, const StaticOptions& options);
-  // Starts afresh (masses from x, velocities zero): call it after the model changed.
+  // Starts afresh (masses from x, velocities zero, no forces kept): call it after the model
+  // changed.
   void reset(const Model& model, const Points& x);
   // At most `iterations` more iterations (fewer when converged, diverged or out of
   // options.max_seconds); the report covers this call only. Velocities stay in the relaxation.
@@ -46,6 +47,7 @@ class StaticRelaxation {
   double dt_ = 0.1, alpha_ = kAlphaStart, size0_ = 1.0;
   int n_positive_ = 0;
   long iterations_ = 0;
+  Points f_, x_of_f_;  // the forces the last advance() ended with, and where
 };
 
 // Moves the free particles of `state` to a nearby equilibrium (velocities are left zero).
