@@ -30,21 +30,34 @@ TEST(SolverSwitch, EveryNameLeadsBackToItsSolver) {
   EXPECT_EQ(solver_names(false).size(), solver_table().size());
 }
 
-TEST(SolverSwitch, TheEquilibriumSolversAgreeOnAPulledSheet) {
-  // 9 x 9 latex sheet, 50 mm, left edge pinned, right edge moved 5 mm out and pinned, weightless.
+// A 9 x 9 latex sheet, 50 mm, left edge pinned, right edge moved 5 mm out and pinned, weightless.
+struct PulledSheet {
+  Sheet sheet;
+  State start;
+};
+
+PulledSheet pulled_sheet() {
   GridSpec g{0.05, 0.05, 9, 9};
   SheetOptions o;
   o.material = *material_preset("latex");
-  Sheet sheet = build_sheet(g, o, {});
-  Model& m = sheet.model;
+  PulledSheet p{build_sheet(g, o, {}), {}};
+  Model& m = p.sheet.model;
   m.gravity = Vec3::Zero();
-  State start{m.reference, Points::Zero(3, m.num_particles())};
+  p.start = State{m.reference, Points::Zero(3, m.num_particles())};
   for (int j = 0; j < 9; ++j) {
-    m.pin(sheet.grid.particle(0, j));
-    const int r = sheet.grid.particle(8, j);
-    start.x(0, r) += 0.005;
+    m.pin(p.sheet.grid.particle(0, j));
+    const int r = p.sheet.grid.particle(8, j);
+    p.start.x(0, r) += 0.005;
     m.pin(r);
   }
+  return p;
+}
+
+TEST(SolverSwitch, TheEquilibriumSolversAgreeOnAPulledSheet) {
+  PulledSheet p = pulled_sheet();
+  const Sheet& sheet = p.sheet;
+  const Model& m = sheet.model;
+  const State& start = p.start;
   SolverSettings settings;
   settings.tolerance = 1e-9;
   settings.force_scale = sheet.stiffness.stretch * sheet.grid.hx();
@@ -63,18 +76,10 @@ TEST(SolverSwitch, TheEquilibriumSolversAgreeOnAPulledSheet) {
 // FIRE carried on in slices (the viewer's frames) keeps the forces each slice ends with for the
 // next: slices give the bits of one run, and a reset after the model changed forgets them.
 TEST(SolverSwitch, FireInSlicesIsFireInOneRunAndAResetForgetsItsForces) {
-  GridSpec g{0.05, 0.05, 9, 9};
-  SheetOptions o;
-  o.material = *material_preset("latex");
-  Sheet sheet = build_sheet(g, o, {});
-  Model& m = sheet.model;
-  m.gravity = Vec3::Zero();
-  State start{m.reference, Points::Zero(3, m.num_particles())};
-  for (int j = 0; j < 9; ++j) {
-    m.pin(sheet.grid.particle(0, j));
-    start.x(0, sheet.grid.particle(8, j)) += 0.005;
-    m.pin(sheet.grid.particle(8, j));
-  }
+  PulledSheet p = pulled_sheet();
+  const Sheet& sheet = p.sheet;
+  Model& m = p.sheet.model;
+  const State& start = p.start;
   StaticOptions so;
   so.tolerance = 1e-14;  // no early stop
   so.force_scale = sheet.stiffness.stretch * sheet.grid.hx();
