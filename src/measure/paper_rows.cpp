@@ -108,7 +108,7 @@ void PaperRows::add_banded(const Row& r, const Vec2& centre, double radius,
     if (r.x[kk] >= centre.x() - w && r.x[kk] <= centre.x() + w) sum += r.value.col(k);
   };
   for (Eigen::Index k = a; k < b; ++k) test(k);
-  for (Eigen::Index k = std::max(c, a); k < d; ++k) test(k);
+  for (Eigen::Index k = c; k < d; ++k) test(k);  // c >= a: w_min <= w_max
 }
 
 }  // namespace membra

@@ -208,10 +208,10 @@ ShellTriangles::Plan ShellTriangles::plan(int i) const {
       add_plane(0.5);
     }
   }
-  // Free slopes s_f = -(B_ff)^-1 B_fk s_k, B = C^T Q C, in fixed 3 x 3 blocks (once per triangle
-  // and change of the rest state, planned()): with the masks P_f and P_k, (P_f B P_f + P_k) is B_ff
-  // padded with the identity. With a rest curvature r the free slopes minimize (C s - r)^T Q (C s -
-  // r) and gain (B_ff)^-1 P_f C^T Q r.
+  // Free slopes s_f = -(B_ff)^-1 B_fk s_k, B = C^T Q C, in fixed 3 x 3 blocks (built once per
+  // change of the rest state, planned()): with the masks P_f and P_k, (P_f B P_f + P_k) is B_ff
+  // padded with the identity. With a rest curvature r the free slopes minimize
+  // (C s - r)^T Q (C s - r) and gain (B_ff)^-1 P_f C^T Q r.
   const Eigen::Vector3d rest = coat_share * coat_curvature[k0];
   Eigen::Matrix3d keep = Eigen::Matrix3d::Identity();
   out.shift = -rest;
