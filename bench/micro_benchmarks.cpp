@@ -11,6 +11,7 @@
 #include <Eigen/CholmodSupport>
 
 #include "membra/measure/curvature.hpp"
+#include "membra/measure/fitted_curvature.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/benchmark_problem.hpp"
 #include "membra/model/continuum_sheet.hpp"
@@ -97,6 +98,26 @@ void BM_Curvature(benchmark::State& state) {
   set_per_item(state, p.model.num_particles());  // ns per particle
 }
 BENCHMARK(BM_Curvature)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
+
+// The curvature the viewer colours a continuum sheet by, every frame: the angle defect smoothed
+// by a quadric fitted over each vertex's two rings (fitted_curvature.hpp), on a 200 mm latex
+// square meshed with edges up to arg mm (10: about 1 100 vertices; 3: about 11 000, the size of
+// the ellipse's and exp2's default meshes), bent into a saddle.
+void BM_FittedCurvature(benchmark::State& state) {
+  membra::ContinuumSpec spec;
+  spec.mesh.max_edge = 1e-3 * static_cast<double>(state.range(0));
+  const membra::Sheet sheet = membra::build_continuum_sheet(spec);
+  Points x = sheet.model.reference;
+  for (Eigen::Index p = 0; p < x.cols(); ++p)
+    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+  for (auto _ : state) {
+    membra::GaussianCurvature k = membra::gaussian_curvature(x, sheet.triangles);
+    membra::smooth_density_on_mesh(x, sheet.triangles, k);
+    benchmark::DoNotOptimize(k.density.data());
+  }
+  set_per_item(state, sheet.model.num_particles());  // ns per particle
+}
+BENCHMARK(BM_FittedCurvature)->Arg(10)->Arg(3)->Unit(benchmark::kMillisecond);
 
 // A latex sheet with bending, n x n, bent out of plane into a saddle so that every element's
 // Hessian is nontrivial, with every coordinate free (dof k is coordinate k).

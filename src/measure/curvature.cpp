@@ -2,25 +2,32 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <numbers>
 
 namespace membra {
 namespace {
 
-// Vertices on an edge used by only one triangle.
+// Vertices on an edge used by only one triangle. The edges as sorted keys, not a map: the viewer
+// colours every frame by this.
 std::vector<bool> interior_vertices(int n, const std::vector<Triangle>& tris) {
-  std::map<std::pair<int, int>, int> uses;
-  std::vector<bool> used(static_cast<size_t>(n), false), inside(static_cast<size_t>(n), false);
+  std::vector<uint64_t> edges;
+  edges.reserve(3 * tris.size());
+  std::vector<bool> inside(static_cast<size_t>(n), false);
   for (const Triangle& t : tris)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
-      ++uses[{std::min(a, b), std::max(a, b)}];
-      used[a] = true;
+      edges.push_back(static_cast<uint64_t>(std::min(a, b)) << 32 |
+                      static_cast<uint32_t>(std::max(a, b)));
+      inside[a] = true;
     }
-  for (int v = 0; v < n; ++v) inside[v] = used[v];
-  for (const auto& [e, count] : uses)
-    if (count == 1) inside[e.first] = inside[e.second] = false;
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i == 1) inside[edges[i] >> 32] = inside[edges[i] & 0xffffffffu] = false;
+    i = j;
+  }
   return inside;
 }
 
