@@ -12,6 +12,7 @@
 
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/fitted_curvature.hpp"
+#include "membra/measure/self_intersection.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/benchmark_problem.hpp"
 #include "membra/model/continuum_sheet.hpp"
@@ -118,6 +119,23 @@ void BM_FittedCurvature(benchmark::State& state) {
   set_per_item(state, sheet.model.num_particles());  // ns per particle
 }
 BENCHMARK(BM_FittedCurvature)->Arg(10)->Arg(3)->Unit(benchmark::kMillisecond);
+
+// The check every run ends with, for a form that passes through itself (self_intersection.hpp),
+// on the same meshes and saddle.
+void BM_SelfIntersection(benchmark::State& state) {
+  membra::ContinuumSpec spec;
+  spec.mesh.max_edge = 1e-3 * static_cast<double>(state.range(0));
+  const membra::Sheet sheet = membra::build_continuum_sheet(spec);
+  Points x = sheet.model.reference;
+  for (Eigen::Index p = 0; p < x.cols(); ++p)
+    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+  for (auto _ : state) {
+    const membra::SelfIntersection si = membra::self_intersections(x, sheet.triangles);
+    benchmark::DoNotOptimize(si.pairs);
+  }
+  set_per_item(state, static_cast<double>(sheet.triangles.size()));  // ns per triangle
+}
+BENCHMARK(BM_SelfIntersection)->Arg(10)->Arg(3)->Unit(benchmark::kMillisecond);
 
 // A latex sheet with bending, n x n, bent out of plane into a saddle so that every element's
 // Hessian is nontrivial, with every coordinate free (dof k is coordinate k).

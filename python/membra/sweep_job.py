@@ -46,6 +46,8 @@ def _measures(report):
         "quadric_k1": shape.get("quadric", {}).get("k1", math.nan),
         "quadric_k2": shape.get("quadric", {}).get("k2", math.nan),
         "stable": report.get("stability", {}).get("stable"),
+        # pairs of triangles crossing: the form passes through itself (docs/measures.md)
+        "self_intersection": report.get("self_intersection", {}).get("pairs"),
     }
 
 

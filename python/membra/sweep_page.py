@@ -53,7 +53,8 @@ def write_sweep_page(table, params, out, title):
     out = Path(out)
     columns = ["id"] + list(params) + ["classification", "quadric", "height", "global_height",
                                        "total_K", "total_K_global", "quadric_k1", "quadric_k2",
-                                       "design_error", "converged", "stable", "wall_seconds"]
+                                       "design_error", "converged", "stable", "self_intersection",
+                                       "wall_seconds"]
     columns = [c for c in columns if c in table.columns and table[c].notna().any()]
     failed = int((table["error"].fillna("") != "").sum())
     lines = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',

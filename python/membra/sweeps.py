@@ -23,7 +23,7 @@ from .sweep_spec import expand, load_sweep, short_labels
 # The columns of the results table, after the varied parameters.
 COLUMNS = ["status", "converged", "stable", "height", "global_height", "total_K",
            "total_K_global", "classification", "quadric", "quadric_k1", "quadric_k2",
-           "design_error", "wall_seconds", "error", "out"]
+           "self_intersection", "design_error", "wall_seconds", "error", "out"]
 
 
 def _client(scheduler, workers):

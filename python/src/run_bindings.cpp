@@ -95,7 +95,7 @@ class NativeRun {
     py::gil_scoped_release nogil;
     const std::lock_guard lock(mutex_);
     r->run = run_->result();
-    r->run.warnings = run_warnings(*r->scene);
+    r->run.warnings = run_warnings(*r->scene, r->run);
     return r;
   }
   py::array_t<double> positions() {

@@ -177,6 +177,15 @@ void report_stability(const StabilityReport& st, json& j) {
                     {"message", st.message}};
 }
 
+// Where the form passes through itself (measure/self_intersection.hpp): the crossing triangle
+// pairs and their place, in the outputs' frame.
+void report_self_intersection(const SelfIntersection& si, json& j) {
+  j["self_intersection"] = {
+      {"pairs", si.pairs},
+      {"triangles", si.triangles.size()},
+      {"at_mm", {si.at.x() / units::mm, si.at.y() / units::mm, si.at.z() / units::mm}}};
+}
+
 // The stress at each cut and hole.
 void report_cuts(const RunResult& r, json& j) {
   j["cuts"] = nlohmann::json::array();
@@ -218,6 +227,7 @@ void report_branches(const RunResult& r, json& j) {
          {"quadric_k1", f.shape.quadric.k1},
          {"quadric_k2", f.shape.quadric.k2},
          {"energy", f.elastic_energy + f.bending_energy + f.gravity_energy + f.support_energy},
+         {"self_intersection_pairs", f.self_intersection.pairs},
          {"output", "branches/" + std::to_string(b + 1) + "/"}});
   }
 }
@@ -291,7 +301,7 @@ json form_units() {
       {"curvature.min_density", "1/m^2"}};
 }
 
-// The units of the stress, cut, stability, map and branch keys.
+// The units of the stress, cut, stability, self-intersection, map and branch keys.
 json mechanics_units() {
   return {
       {"stress.min", "MPa (spring force / (tributary width x sheet thickness); < 0 compression)"},
@@ -314,6 +324,9 @@ json mechanics_units() {
       {"stability.min_eigenvalue",
        "N/mm (upper bound of the energy Hessian's smallest eigenvalue when unstable, else 0)"},
       {"stability.shift", "N/mm (stable means Hessian + shift I is positive definite)"},
+      {"self_intersection.pairs",
+       "1 (pairs of triangles sharing no vertex that cross: the form passes through itself)"},
+      {"self_intersection.at_mm", "mm, the crossing triangles' mean centroid (final.obj's frame)"},
       {"curvature_map.rms_error",
        "1/m^2 (measured - target Gaussian curvature over the interior particles)"},
       {"curvature_map.mean_target", "1/m^2"},
@@ -357,6 +370,7 @@ json make_report(const Scene& scene, const RunResult& r) {
     report_form(r, j);
     if (r.curvature_map) report_curvature_map(*r.curvature_map, j);
     report_stability(r.stability, j);
+    report_self_intersection(r.self_intersection, j);
     report_cuts(r, j);
     if (r.explored > 0) report_branches(r, j);
   }

@@ -56,6 +56,8 @@ struct Row {
 constexpr Row kRows[] = {
     {"Status", "/status", "text", "converged, not_converged or diverged"},
     {"Stable", "/stability/stable", "text", "a minimum of the energy (false: a saddle)"},
+    {"Passes through itself", "/self_intersection/pairs", "",
+     "triangle pairs that cross: no self-contact in the model, so 0 for a physical form"},
     {"Form", "/curvature/global/classification", "text",
      "of the global form, wrinkles averaged out"},
     {"Quadric", "/shape/quadric/classification", "text",

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <variant>
 
+#include "membra/core/units.hpp"
 #include "membra/geometry/mesh_prolongation.hpp"
 #include "membra/process/explore.hpp"
 #include "membra/process/grid_resolution.hpp"
@@ -181,9 +183,21 @@ bool SceneRun::solve() {
       {"solve", solve_scene_step(*scene_, r_.prepared, s, "solve", progress_, &recorder_), 0});
 }
 
-std::vector<std::string> run_warnings(const Scene& scene) {
+std::vector<std::string> run_warnings(const Scene& scene, const RunResult& r) {
   std::vector<std::string> out;
   if (const auto coarse = coarse_grid(scene)) out.push_back(coarse->message);
+  const SelfIntersection& si = r.self_intersection;
+  if (si.pairs > 0 && !r.solve.diverged) {
+    char at[96];
+    std::snprintf(at, sizeof at, "(%.0f, %.0f, %.0f) mm", si.at.x() / units::mm,
+                  si.at.y() / units::mm, si.at.z() / units::mm);
+    out.push_back("the form passes through itself: " + std::to_string(si.pairs) +
+                  " pairs of triangles cross, around " + at +
+                  " (final.obj's frame). membra has no self-contact, so no real sheet takes this "
+                  "form there: try another perturbation or seed of the release, or more "
+                  "increments, and compare (docs/measures.md, \"A form that passes through "
+                  "itself\")");
+  }
   return out;
 }
 
@@ -218,7 +232,7 @@ RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
       has_levels(scene) ? run_multilevel(scene, progress) : run_on_own_grid(scene, progress);
   if (scene.simulation.explore > 1 && !r.solve.diverged) explore_branches(scene, r, progress);
   // Once per run, not per grid level or explored release (after a level's own advice, if any).
-  std::vector<std::string> warnings = run_warnings(scene);
+  std::vector<std::string> warnings = run_warnings(scene, r);
   r.warnings.insert(r.warnings.end(), warnings.begin(), warnings.end());
   return r;
 }

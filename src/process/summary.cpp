@@ -10,6 +10,7 @@
 #include "membra/measure/mesh_hole_edge.hpp"
 #include "membra/measure/quadric_fit.hpp"
 #include "membra/measure/reading_pose.hpp"
+#include "membra/measure/self_intersection.hpp"
 #include "membra/measure/stress.hpp"
 #include "membra/measure/stress_tensor.hpp"
 #include "membra/model/forces.hpp"
@@ -44,6 +45,8 @@ void summarize_form(RunResult& r) {
   r.vertex_stress = vertex_stress(m, s.x, mem.sheet.material.thickness);
   // A small residual does not tell a minimum from a soft saddle.
   r.stability = check_stability(m, s.x, mem.sheet.stiffness.stretch);
+  // Neither model has self-contact: a form may settle through itself (docs/measures.md).
+  r.self_intersection = self_intersections(s.x, mem.sheet.triangles);
 }
 
 // Compared over the interior: a tenth of the sheet's smaller side in from the edge, where the
@@ -109,6 +112,8 @@ void pose_form(RunResult& r) {
   shape.bbox_max = s.x.rowwise().maxCoeff();
   shape.z_range = shape.bbox_max.z() - shape.bbox_min.z();
   shape.normal = turn * shape.normal;
+  if (r.self_intersection.pairs > 0)
+    r.self_intersection.at = turn * r.self_intersection.at + r.pose.translation;
   QuadricFit& q = shape.quadric;
   q.centre = turn * q.centre + r.pose.translation;
   for (Vec3* d : {&q.normal, &q.d1, &q.d2, &q.paper_x}) *d = turn * *d;

@@ -66,7 +66,8 @@ TEST(Explore, TheReportListsTheBranches) {
   for (const auto& b : j["branches"]) {
     count += b["count"].get<int>();
     EXPECT_EQ(b["output"], "branches/" + std::to_string(b["index"].get<int>()) + "/");
-    EXPECT_GT(b["height"].get<double>(), 2.0);  // mm
+    EXPECT_GT(b["height"].get<double>(), 2.0);   // mm
+    EXPECT_EQ(b["self_intersection_pairs"], 0);  // a buckled strip does not cross itself
   }
   EXPECT_EQ(count + j["explore"]["unsettled"].get<int>(), 4);
   EXPECT_FALSE(make_report(buckling_strip(1), run_scene(buckling_strip(1))).contains("branches"));

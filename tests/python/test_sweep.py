@@ -17,7 +17,7 @@ import membra
 from membra.sweep_spec import expand, load_sweep
 
 PHYSICS = ["status", "converged", "height", "global_height", "total_K", "total_K_global",
-           "classification"]
+           "classification", "self_intersection"]
 
 
 def four_scenes(root):

@@ -59,9 +59,10 @@ class SceneRun {
   std::function<double(const Vec2&)> curvature_field_;  // of the last curvature_map step
 };
 
-// The advice a run of `scene` carries (RunResult::warnings): a grid too coarse for its pattern
-// (grid_resolution.hpp). run_scene fills it in; a run taken step by step asks for it.
-std::vector<std::string> run_warnings(const Scene& scene);
+// The advice a run of `scene` that ended in `r` carries (RunResult::warnings): a grid too coarse
+// for its pattern (grid_resolution.hpp), a form that passes through itself
+// (self_intersection.hpp). run_scene fills it in; a run taken step by step asks for it.
+std::vector<std::string> run_warnings(const Scene& scene, const RunResult& r);
 
 // Runs a scene to the end. `progress` (optional) is called every so often. Throws InputError
 // when a step cannot be carried out (a pattern that covers no spring).

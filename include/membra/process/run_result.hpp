@@ -8,6 +8,7 @@
 
 #include "membra/geometry/rigid_fit.hpp"
 #include "membra/measure/curvature.hpp"
+#include "membra/measure/self_intersection.hpp"
 #include "membra/measure/shape.hpp"
 #include "membra/measure/stress.hpp"
 #include "membra/measure/stress_concentration.hpp"
@@ -87,6 +88,7 @@ struct RunResult {
   std::vector<StressConcentration> concentrations;  // stress at each feature, final state
   std::optional<CurvatureMapResult> curvature_map;  // scenes with a curvature_map step
   StabilityReport stability;                        // of the final state
+  SelfIntersection self_intersection;  // of the final state: where it passes through itself
   // simulation.explore > 1: the distinct stable forms its releases ended in (explore.hpp),
   // most often found first; empty otherwise. This result is release 0's (the scene's own
   // imperfection), one of them when it is stable.

@@ -1,0 +1,52 @@
+// The advice a run carries before its form is trusted (process/run.hpp, run_warnings): here, a
+// form that passes through itself (docs/measures.md, "A form that passes through itself").
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "membra/io/scene.hpp"
+#include "membra/process/run.hpp"
+
+namespace membra {
+namespace run_warnings_test {
+namespace {
+
+const std::string kExamples = std::string(MEMBRA_SOURCE_DIR) + "/examples/";
+
+bool says_it_passes_through_itself(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings)
+    if (w.find("passes through itself") != std::string::npos) return true;
+  return false;
+}
+
+// exp3 on the lattice at 21 x 21 rolls its strips past a full turn, and the turns cross (31
+// pairs of triangles when measured); the run says so, with where.
+TEST(RunWarnings, Exp3At21RollsThroughItselfAndSaysSo) {
+  const Scene scene = load_scene(kExamples + "exp3_parallel.json", {"sheet.resolution=[21,21]"});
+  const RunResult r = run_scene(scene);
+  ASSERT_TRUE(r.solve.converged);
+  EXPECT_GT(r.self_intersection.pairs, 0);
+  EXPECT_FALSE(r.self_intersection.triangles.empty());
+  ASSERT_TRUE(says_it_passes_through_itself(r.warnings));
+}
+
+// The message names the count and the place, in mm; a form that does not cross says nothing.
+TEST(RunWarnings, TheMessageNamesHowManyAndWhere) {
+  const Scene scene = load_scene(kExamples + "exp1_basic.json");
+  RunResult r;
+  r.self_intersection.pairs = 12;
+  r.self_intersection.triangles = {1, 2, 3};
+  r.self_intersection.at = Vec3(0.010, -0.020, 0.030);
+  const std::vector<std::string> w = run_warnings(scene, r);
+  ASSERT_TRUE(says_it_passes_through_itself(w));
+  const std::string& m = w.back();
+  EXPECT_NE(m.find("12 pairs of triangles"), std::string::npos) << m;
+  EXPECT_NE(m.find("(10, -20, 30) mm"), std::string::npos) << m;
+  EXPECT_NE(m.find("no self-contact"), std::string::npos) << m;
+  r.self_intersection = {};
+  EXPECT_FALSE(says_it_passes_through_itself(run_warnings(scene, r)));
+}
+
+}  // namespace
+}  // namespace run_warnings_test
+}  // namespace membra
