@@ -100,17 +100,31 @@ void BM_Curvature(benchmark::State& state) {
 }
 BENCHMARK(BM_Curvature)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
 
+// A 200 mm latex square on the continuum model, meshed with edges up to `max_edge_mm`, bent
+// into the saddle z = 0.3 x^2 - 0.2 y^2 (m) so that every element is nontrivial.
+struct BentMesh {
+  explicit BentMesh(long max_edge_mm)
+      : sheet(membra::build_continuum_sheet([&] {
+          membra::ContinuumSpec spec;
+          spec.mesh.max_edge = 1e-3 * static_cast<double>(max_edge_mm);
+          return spec;
+        }())),
+        x(sheet.model.reference) {
+    for (Eigen::Index p = 0; p < x.cols(); ++p)
+      x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+  }
+  membra::Sheet sheet;
+  Points x;
+};
+
 // The curvature the viewer colours a continuum sheet by, every frame: the angle defect smoothed
 // by a quadric fitted over each vertex's two rings (fitted_curvature.hpp), on a 200 mm latex
 // square meshed with edges up to arg mm (10: about 1 100 vertices; 3: about 11 000, the size of
 // the ellipse's and exp2's default meshes), bent into a saddle.
 void BM_FittedCurvature(benchmark::State& state) {
-  membra::ContinuumSpec spec;
-  spec.mesh.max_edge = 1e-3 * static_cast<double>(state.range(0));
-  const membra::Sheet sheet = membra::build_continuum_sheet(spec);
-  Points x = sheet.model.reference;
-  for (Eigen::Index p = 0; p < x.cols(); ++p)
-    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+  const BentMesh b(state.range(0));
+  const membra::Sheet& sheet = b.sheet;
+  const Points& x = b.x;
   for (auto _ : state) {
     membra::GaussianCurvature k = membra::gaussian_curvature(x, sheet.triangles);
     membra::smooth_density_on_mesh(x, sheet.triangles, k);
@@ -123,12 +137,9 @@ BENCHMARK(BM_FittedCurvature)->Arg(10)->Arg(3)->Unit(benchmark::kMillisecond);
 // The check every run ends with, for a form that passes through itself (self_intersection.hpp),
 // on the same meshes and saddle.
 void BM_SelfIntersection(benchmark::State& state) {
-  membra::ContinuumSpec spec;
-  spec.mesh.max_edge = 1e-3 * static_cast<double>(state.range(0));
-  const membra::Sheet sheet = membra::build_continuum_sheet(spec);
-  Points x = sheet.model.reference;
-  for (Eigen::Index p = 0; p < x.cols(); ++p)
-    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+  const BentMesh b(state.range(0));
+  const membra::Sheet& sheet = b.sheet;
+  const Points& x = b.x;
   for (auto _ : state) {
     const membra::SelfIntersection si = membra::self_intersections(x, sheet.triangles);
     benchmark::DoNotOptimize(si.pairs);
@@ -174,12 +185,9 @@ BENCHMARK(BM_HessianAssembly)->Args({64, 0})->Args({64, 1})->Unit(benchmark::kMi
 // bent into the same saddle; exact (arg 1 = 0) or projected (1). Each shell triangle's block
 // couples the 12 particles of its stencil (docs/model.md, "Bending").
 void BM_ContinuumHessianAssembly(benchmark::State& state) {
-  membra::ContinuumSpec spec;
-  spec.mesh.max_edge = 1e-3 * static_cast<double>(state.range(0));
-  const membra::Sheet sheet = membra::build_continuum_sheet(spec);
-  Points x = sheet.model.reference;
-  for (Eigen::Index p = 0; p < x.cols(); ++p)
-    x(2, p) = 0.3 * x(0, p) * x(0, p) - 0.2 * x(1, p) * x(1, p);
+  const BentMesh b(state.range(0));
+  const membra::Sheet& sheet = b.sheet;
+  const Points& x = b.x;
   std::vector<int> dof(static_cast<size_t>(x.size()));
   for (size_t k = 0; k < dof.size(); ++k) dof[k] = static_cast<int>(k);
   membra::HessianAssembler a(sheet.model, dof, static_cast<int>(dof.size()));

@@ -35,7 +35,8 @@ OneRings one_rings(int n, const std::vector<Triangle>& tris) {
     std::sort(first, last);
     const auto end = std::unique(first, last);
     r.start[v] = out;
-    out = static_cast<int>(std::copy(first, end, r.near.begin() + out) - r.near.begin());
+    // Moved left within the array, element by element (std::copy may not start inside its source).
+    for (auto i = first; i != end; ++i) r.near[static_cast<size_t>(out++)] = *i;
   }
   r.start[static_cast<size_t>(n)] = out;
   r.near.resize(static_cast<size_t>(out));

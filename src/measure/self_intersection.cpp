@@ -73,8 +73,12 @@ struct CellGrid {
       lo = lo.cwiseMin(box[t].lo), hi = hi.cwiseMax(box[t].hi);
       extent += (box[t].hi - box[t].lo).maxCoeff();
     }
+    // At most 2e6 cells along an axis, so that an index fits the key's 21 bits.
     cell = std::max(
         {2.0 * extent / static_cast<double>(tris.size()), (hi - lo).maxCoeff() / 2.0e6, 1e-12});
+    // A few huge triangles (a sheet torn into long slivers) could span millions of cells each:
+    // coarser cells until every box's cells add up to a few per triangle.
+    while (cells_needed() > 16 * tris.size() + 1'000'000) cell *= 2.0;
     for (size_t t = 0; t < tris.size(); ++t) {
       const Eigen::Array3i c0 = index(box[t].lo), c1 = index(box[t].hi);
       for (int i = c0.x(); i <= c1.x(); ++i)
@@ -83,6 +87,12 @@ struct CellGrid {
             entries.emplace_back(cell_key({i, j, k}), static_cast<int>(t));
     }
     std::sort(entries.begin(), entries.end());
+  }
+
+  size_t cells_needed() const {
+    double sum = 0.0;
+    for (const Box& b : box) sum += ((index(b.hi) - index(b.lo)).cast<double>() + 1.0).prod();
+    return static_cast<size_t>(std::min(sum, 1e18));
   }
 
   // Whether the boxes of s and t meet and the cell `key` is where their pair is tested: the one
@@ -102,11 +112,28 @@ bool pair_crosses(const Points& x, const Triangle& s, const Triangle& t) {
                          {x.col(t[0]), x.col(t[1]), x.col(t[2])});
 }
 
+// The centroid of the listed triangle nearest the mean of their centroids: a place on the
+// sheet even when it crosses itself in two places (the mean alone could lie between them).
+Vec3 nearest_to_mean(const Points& x, const std::vector<Triangle>& tris,
+                     const std::vector<int>& listed) {
+  if (listed.empty()) return Vec3::Zero();
+  std::vector<Vec3> centroid;
+  Vec3 mean = Vec3::Zero();
+  for (int t : listed) {
+    const Triangle& tri = tris[static_cast<size_t>(t)];
+    centroid.push_back((x.col(tri[0]) + x.col(tri[1]) + x.col(tri[2])) / 3.0);
+    mean += centroid.back() / static_cast<double>(listed.size());
+  }
+  return *std::min_element(centroid.begin(), centroid.end(), [&](const Vec3& a, const Vec3& b) {
+    return (a - mean).squaredNorm() < (b - mean).squaredNorm();
+  });
+}
+
 }  // namespace
 
 SelfIntersection self_intersections(const Points& x, const std::vector<Triangle>& tris) {
   SelfIntersection out;
-  if (tris.size() < 2) return out;
+  if (tris.size() < 2 || !x.allFinite()) return out;
   const CellGrid grid(x, tris);
   const auto& entries = grid.entries;
   std::vector<int> crossing;
@@ -126,11 +153,7 @@ SelfIntersection self_intersections(const Points& x, const std::vector<Triangle>
   }
   std::sort(crossing.begin(), crossing.end());
   crossing.erase(std::unique(crossing.begin(), crossing.end()), crossing.end());
-  for (int t : crossing) {
-    const Triangle& tri = tris[static_cast<size_t>(t)];
-    out.at += (x.col(tri[0]) + x.col(tri[1]) + x.col(tri[2])) / 3.0;
-  }
-  if (!crossing.empty()) out.at /= static_cast<double>(crossing.size());
+  out.at = nearest_to_mean(x, tris, crossing);
   out.triangles = std::move(crossing);
   return out;
 }

@@ -189,6 +189,7 @@ RunResult run_multilevel(const Scene& scene, const ProgressFn& progress) {
     if (scene.model != SheetModel::continuum) throw;
     Scene without = scene;
     without.simulation.multilevel = 0;
+    without.simulation.explore = 1;  // the outer run_scene explores, once
     RunResult r = run_scene(without, progress);
     r.warnings = {"simulation.multilevel: the coarser level (" + level_name(coarser) +
                   ") could not be meshed, so the scene's own mesh followed the path: " + e.what()};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -183,21 +184,39 @@ bool SceneRun::solve() {
       {"solve", solve_scene_step(*scene_, r_.prepared, s, "solve", progress_, &recorder_), 0});
 }
 
+namespace {
+
+// "N pairs of triangles cross, around (x, y, z) mm": where a form passes through itself.
+std::string crossing_place(const SelfIntersection& si) {
+  char at[96];
+  // Rounded first, then + 0.0: no "-0" for a coordinate just below zero.
+  const auto mm = [](double v) { return std::round(v / units::mm) + 0.0; };
+  std::snprintf(at, sizeof at, "(%.0f, %.0f, %.0f) mm", mm(si.at.x()), mm(si.at.y()),
+                mm(si.at.z()));
+  return std::to_string(si.pairs) + " pairs of triangles cross, around " + at;
+}
+
+}  // namespace
+
 std::vector<std::string> run_warnings(const Scene& scene, const RunResult& r) {
   std::vector<std::string> out;
   if (const auto coarse = coarse_grid(scene)) out.push_back(coarse->message);
-  const SelfIntersection& si = r.self_intersection;
-  if (si.pairs > 0 && !r.solve.diverged) {
-    char at[96];
-    std::snprintf(at, sizeof at, "(%.0f, %.0f, %.0f) mm", si.at.x() / units::mm,
-                  si.at.y() / units::mm, si.at.z() / units::mm);
-    out.push_back("the form passes through itself: " + std::to_string(si.pairs) +
-                  " pairs of triangles cross, around " + at +
+  if (r.solve.diverged) return out;
+  if (r.self_intersection.pairs > 0)
+    out.push_back("the form passes through itself: " + crossing_place(r.self_intersection) +
                   " (final.obj's frame). membra has no self-contact, so no real sheet takes this "
                   "form there: try another perturbation or seed of the release, or more "
                   "increments, and compare (docs/measures.md, \"A form that passes through "
                   "itself\")");
-  }
+  // The other forms simulation.explore found, each written to branches/k/ (the one release 0,
+  // the scene's own, ended in is the run's form, said above).
+  for (size_t k = 0; k < r.branches.size(); ++k)
+    if (r.branches[k].run.self_intersection.pairs > 0 &&
+        std::find(r.branches[k].releases.begin(), r.branches[k].releases.end(), 0) ==
+            r.branches[k].releases.end())
+      out.push_back("simulation.explore: form " + std::to_string(k + 1) + " (branches/" +
+                    std::to_string(k + 1) + "/) passes through itself: " +
+                    crossing_place(r.branches[k].run.self_intersection));
   return out;
 }
 

@@ -104,7 +104,8 @@ TEST(FittedCurvature, ReadsKnownSurfacesFarBetterThanAngleDefects) {
 }
 
 // The fit is each vertex's own: a 3 mm mesh (over 4 096 vertices, so its vertices are split
-// between threads) gives the same values, bit for bit, on one thread and on two.
+// between threads) gives the same values, bit for bit, on one thread and on two. It guards
+// against a buffer shared between the threads, which would fail it (not every time).
 TEST(FittedCurvature, TheThreadsChangeNoValue) {
   const double r = 0.15;
   const Mapped m = mapped_mesh(

@@ -26,6 +26,29 @@ TEST(SelfIntersection, TwoTrianglesCrossOrNot) {
   EXPECT_EQ(self_intersections(x, tris).pairs, 0);
 }
 
+// Not-finite positions are not checked (a diverged state); two huge triangles among small ones,
+// which alone would span millions of cells, are still checked, on coarser cells.
+TEST(SelfIntersection, NaNsAreSkippedAndHugeTrianglesStillChecked) {
+  Points x(3, 6);
+  x.col(0) = Vec3(0, 0, 0), x.col(1) = Vec3(1, 0, 0), x.col(2) = Vec3(0, 1, 0);
+  x.col(3) = Vec3(0.2, 0.2, -0.5), x.col(4) = Vec3(0.8, 0.2, 0.5), x.col(5) = Vec3(0.25, 0.6, 0.5);
+  std::vector<Triangle> tris = {Triangle(0, 1, 2), Triangle(3, 4, 5)};
+  // A hundred thousand tiny triangles far off, 1 um across: the mean size makes cells of about
+  // 40 um, and the standing triangle's box (0.6 x 0.4 x 1 m) would span 4e12 of them.
+  const int tiny = 100000;
+  x.conservativeResize(3, 6 + 3 * tiny);
+  for (int k = 0; k < tiny; ++k) {
+    const int first = 6 + 3 * k;
+    const Vec3 at(5.0 + 1e-5 * k, 5.0, 5.0);
+    x.col(first) = at, x.col(first + 1) = at + Vec3(1e-6, 0, 0);
+    x.col(first + 2) = at + Vec3(0, 1e-6, 0);
+    tris.emplace_back(first, first + 1, first + 2);
+  }
+  EXPECT_EQ(self_intersections(x, tris).pairs, 1);
+  x(0, 4) = std::nan("");
+  EXPECT_EQ(self_intersections(x, tris).pairs, 0);
+}
+
 // A sheet of n x n nodes, 100 x 100 mm, each node placed by `shape` from its paper position.
 struct Surface {
   Points x;

@@ -47,6 +47,29 @@ TEST(RunWarnings, TheMessageNamesHowManyAndWhere) {
   EXPECT_FALSE(says_it_passes_through_itself(run_warnings(scene, r)));
 }
 
+// With simulation.explore, another form that crosses itself is named by its branch; the form
+// release 0 ended in is the run's own, said once.
+TEST(RunWarnings, AnExploredFormThatCrossesItselfIsNamed) {
+  const Scene scene = load_scene(kExamples + "exp1_basic.json");
+  RunResult r;
+  r.self_intersection.pairs = 3;
+  r.branches.resize(3);
+  r.branches[0].releases = {0, 2};
+  r.branches[0].run.self_intersection.pairs = 3;
+  r.branches[1].releases = {1};
+  r.branches[1].run.self_intersection.pairs = 7;
+  r.branches[2].releases = {3};
+  const std::vector<std::string> w = run_warnings(scene, r);
+  int explored = 0;
+  for (const std::string& m : w)
+    if (m.find("simulation.explore") != std::string::npos) {
+      ++explored;
+      EXPECT_NE(m.find("form 2 (branches/2/)"), std::string::npos) << m;
+      EXPECT_NE(m.find("7 pairs"), std::string::npos) << m;
+    }
+  EXPECT_EQ(explored, 1);
+}
+
 }  // namespace
 }  // namespace run_warnings_test
 }  // namespace membra

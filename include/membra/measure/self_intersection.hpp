@@ -13,13 +13,17 @@ namespace membra {
 struct SelfIntersection {
   long pairs = 0;              // pairs of triangles that share no vertex and cross
   std::vector<int> triangles;  // the triangles of those pairs, sorted, each once
-  Vec3 at = Vec3::Zero();      // the mean of their centroids, m (zero when none cross)
+  // Where they cross, m: the centroid of the crossing triangle nearest their mean (on the sheet
+  // even when it crosses in two places); zero when none cross.
+  Vec3 at = Vec3::Zero();
 };
 
 // The crossing triangle pairs of the surface x, tris (3 x N positions, m). Triangles sharing a
 // vertex are neighbours, not crossings; coplanar overlaps (a sheet folded exactly flat onto
-// itself) are not detected. Candidates come from a uniform grid of cells about the size of the
-// triangles, so the cost grows with the number of triangles, not its square.
+// itself) are not detected. Candidates come from a uniform grid of cells about twice a mean
+// triangle across, so on a mesh of even size the cost grows with the number of triangles, not
+// its square (a graded mesh's small triangles share cells). Positions that are not finite cross
+// nothing.
 SelfIntersection self_intersections(const Points& x, const std::vector<Triangle>& tris);
 
 }  // namespace membra
