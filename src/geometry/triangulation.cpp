@@ -30,6 +30,22 @@ std::map<std::pair<int, int>, int> edge_counts(const std::vector<Triangle>& tria
   return count;
 }
 
+std::vector<bool> boundary_vertices(int n, const std::vector<Triangle>& triangles) {
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * triangles.size());
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) edges.push_back(edge_key(t[k], t[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  std::vector<bool> on(static_cast<size_t>(n), false);
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i == 1) on[edges[i] >> 32] = on[edges[i] & 0xffffffffu] = true;
+    i = j;
+  }
+  return on;
+}
+
 Points vertex_normals(const Points& x, const std::vector<Triangle>& triangles) {
   Points n = Points::Zero(3, x.cols());
   for (const Triangle& t : triangles) {

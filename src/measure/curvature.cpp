@@ -2,32 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 
 namespace membra {
 namespace {
 
-// Vertices on an edge used by only one triangle. The edges as sorted keys, not a map: the viewer
-// colours every frame by this.
+// The vertices some triangle uses that are not on the boundary (an edge only one triangle has).
 std::vector<bool> interior_vertices(int n, const std::vector<Triangle>& tris) {
-  std::vector<uint64_t> edges;
-  edges.reserve(3 * tris.size());
   std::vector<bool> inside(static_cast<size_t>(n), false);
   for (const Triangle& t : tris)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      edges.push_back(static_cast<uint64_t>(std::min(a, b)) << 32 |
-                      static_cast<uint32_t>(std::max(a, b)));
-      inside[a] = true;
-    }
-  std::sort(edges.begin(), edges.end());
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i + 1;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (j - i == 1) inside[edges[i] >> 32] = inside[edges[i] & 0xffffffffu] = false;
-    i = j;
-  }
+    for (int k = 0; k < 3; ++k) inside[static_cast<size_t>(t[k])] = true;
+  const std::vector<bool> boundary = boundary_vertices(n, tris);
+  for (size_t v = 0; v < inside.size(); ++v) inside[v] = inside[v] && !boundary[v];
   return inside;
 }
 

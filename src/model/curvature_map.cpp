@@ -8,6 +8,8 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include "membra/geometry/triangulation.hpp"
+
 namespace membra {
 
 std::vector<bool> edge_particles(const GridSheet& g) {
@@ -127,10 +129,7 @@ bool newton(const Liouville& op, const std::vector<int>& unknown, int n,
 std::vector<bool> edge_particles(const Sheet& sheet) {
   if (!sheet.continuum()) return edge_particles(sheet.grid);
   // An edge of one triangle only is on the outline, a hole's rim or a slit's lip.
-  std::vector<bool> edge(static_cast<size_t>(sheet.model.num_particles()), false);
-  for (const auto& [e, n] : edge_counts(sheet.triangles))
-    if (n == 1) edge[static_cast<size_t>(e.first)] = edge[static_cast<size_t>(e.second)] = true;
-  return edge;
+  return boundary_vertices(sheet.model.num_particles(), sheet.triangles);
 }
 
 ConformalFactor conformal_factor(const Sheet& sheet, const std::vector<double>& K,

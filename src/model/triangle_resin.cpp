@@ -4,13 +4,10 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "membra/geometry/triangulation.hpp"
+
 namespace membra {
 namespace {
-
-std::uint64_t edge_key(int a, int b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
-         static_cast<std::uint32_t>(std::max(a, b));
-}
 
 std::vector<bool> lattice_resin(const Sheet& sheet) {
   const Springs& s = sheet.model.springs;

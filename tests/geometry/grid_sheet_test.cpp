@@ -1,6 +1,9 @@
 // Grid sheets, masks and triangulation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "membra/geometry/grid_sheet.hpp"
 #include "membra/geometry/triangulation.hpp"
 
@@ -55,6 +58,26 @@ TEST(Triangulation, TwoCounterClockwiseTrianglesPerActiveCell) {
     area += signed_area;
   }
   EXPECT_NEAR(area, 0.3 * 0.2, 1e-15);
+}
+
+// The boundary of a 7 x 7 grid with its centre node masked out (a hole): the 24 nodes of the
+// outline and the 8 around the hole, the same as edge_counts' edges of one triangle; the other
+// 16 nodes are inside.
+TEST(Triangulation, BoundaryVerticesAreTheOutlineAndTheHolesRim) {
+  const GridSheet g({0.6, 0.6, 7, 7}, [](double x, double y) {
+    return std::abs(x - 0.3) > 1e-9 || std::abs(y - 0.3) > 1e-9;
+  });
+  const auto tris = triangulate(g);
+  const std::vector<bool> on = boundary_vertices(g.num_particles(), tris);
+  std::vector<bool> want(on.size(), false);
+  for (const auto& [edge, count] : edge_counts(tris))
+    if (count == 1)
+      want[static_cast<size_t>(edge.first)] = want[static_cast<size_t>(edge.second)] = true;
+  EXPECT_EQ(on, want);
+  ASSERT_EQ(on.size(), 48u);
+  EXPECT_EQ(std::count(on.begin(), on.end(), true), 24 + 8);
+  EXPECT_EQ(edge_key(3, 7), edge_key(7, 3));
+  EXPECT_EQ(edge_key(3, 7) >> 32, 3u);
 }
 
 }  // namespace
