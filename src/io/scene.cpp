@@ -31,7 +31,8 @@ const std::vector<std::string_view> kSpringKeys = {"stretch", "shear", "flex", "
 const std::vector<std::string_view> kMaterialKeys = {"preset",  "E",   "thickness",
                                                      "density", "law", "wrinkling"};
 const std::vector<std::string_view> kPinKeys = {"corners", "edge", "point", "box"};
-const std::vector<std::string_view> kSimulationKeys = {"solver",
+const std::vector<std::string_view> kSimulationKeys = {"self_contact",
+                                                       "solver",
                                                        "K",
                                                        "G",
                                                        "T",
@@ -167,6 +168,25 @@ void parse_sheet(const JsonObject& top, const std::map<std::string, Material>& m
   }
 }
 
+// simulation.self_contact: true (the defaults), false, or an object of gap (mm), pressure (kPa)
+// and exclusion (mm, at least the gap).
+void parse_self_contact(const JsonObject& s, SelfContactSpec& c) {
+  if (!s.has("self_contact")) return;
+  if (s.at("self_contact").is_boolean()) {
+    c.on = s.boolean("self_contact", false);
+    return;
+  }
+  const JsonObject o = s.object("self_contact", {"gap", "pressure", "exclusion"});
+  c.on = true;
+  c.gap = o.number("gap", c.gap / units::mm, Bounds{0.0, 100.0, true}) * units::mm;
+  c.pressure = o.number("pressure", c.pressure / 1e3, Bounds{0.0, 1e6, true}) * 1e3;
+  c.exclusion = o.number("exclusion", 3.0 * c.gap / units::mm, Bounds::positive()) * units::mm;
+  if (c.exclusion < c.gap)
+    throw InputError(o.pointer("exclusion"),
+                     "points nearer than the gap on the natural sheet must not touch: make the "
+                     "exclusion at least the gap");
+}
+
 void parse_simulation(const JsonObject& top, Scene& scene) {
   SimulationSpec& sim = scene.simulation;
   if (!top.has("simulation")) return;
@@ -196,6 +216,7 @@ void parse_simulation(const JsonObject& top, Scene& scene) {
     throw InputError(s.pointer("support"),
                      "a table holds the piece against gravity: set simulation.G above 0 (e.g. "
                      "9.81 m/s^2)");
+  parse_self_contact(s, sim.self_contact);
   sim.explore = static_cast<int>(s.integer("explore", sim.explore, 1, 1000));
   sim.multilevel = static_cast<int>(s.integer("multilevel", sim.multilevel, 0, kMaxNodesPerSide));
   if (sim.multilevel > 0 && sim.multilevel < 5)
@@ -286,6 +307,23 @@ void parse_output(const JsonObject& top, OutputSpec& out) {
   out.colormap = colour_map_named(o.string("colormap", "diverging", {"diverging", "paper"}));
 }
 
+namespace {
+
+// Self-contact is the continuum sheet's (its triangles), and Newton's, whose line search keeps
+// the sheet from stepping through itself (docs/model.md, "Self-contact").
+void check_self_contact(const Scene& scene) {
+  if (!scene.simulation.self_contact.on) return;
+  if (scene.model != SheetModel::continuum)
+    throw InputError("/simulation/self_contact",
+                     "self-contact needs the continuum sheet's triangles: set \"model\": "
+                     "\"continuum\" (or --set model=continuum)");
+  if (scene.simulation.solver != Solver::newton)
+    throw InputError("/simulation/self_contact",
+                     "self-contact is kept by Newton's line search: use \"solver\": \"newton\"");
+}
+
+}  // namespace
+
 Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   Scene scene;
   const JsonObject top(j, "", kTopKeys);
@@ -313,6 +351,7 @@ Scene parse_scene(const json& j, const std::filesystem::path& base_dir) {
   parse_simulation(top, scene);
   parse_protocol(top, materials, base_dir, scene);
   parse_output(top, scene.output);
+  check_self_contact(scene);
   if (scene.protocol.empty() && scene.simulation.is_static() && scene.pins.empty() &&
       scene.simulation.gravity != 0.0 && scene.simulation.support == Support::none)
     throw InputError("/simulation/G",

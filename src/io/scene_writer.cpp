@@ -185,6 +185,10 @@ json write_simulation(const Scene& scene) {
             {"support", to_string(s.support)},
             {"multilevel", s.multilevel}};
   if (s.ramp_seconds > 0.0) j["ramp_seconds"] = s.ramp_seconds;
+  if (s.self_contact.on)
+    j["self_contact"] = {{"gap", in(s.self_contact.gap, units::mm)},
+                         {"pressure", s.self_contact.pressure / 1e3},
+                         {"exclusion", in(s.self_contact.exclusion, units::mm)}};
   if (scene.sheet.stretch_stiffness) j["K"] = in(*scene.sheet.stretch_stiffness, units::N_per_mm);
   return j;
 }

@@ -106,6 +106,7 @@ void add_copies(Membrane& m, const std::vector<int>& copy_of, std::vector<Triang
   m.sheet.triangles = std::move(corners);
   lump_masses(m.sheet);
   model.table.cover(model.mass);  // the new lips on the table too, if there is one
+  model.self_contact.recover(m.sheet.triangles, model.reference);
   for (int p = 0; p < n + added; ++p)
     if (pinned[static_cast<size_t>(p)]) model.pin(p);
   const std::set<int> frame(m.frame.begin(), m.frame.end());

@@ -73,6 +73,13 @@ void report_run(const Scene& scene, const RunResult& r, json& j) {
                   {"max_depth_mm", r.table.max_depth / units::mm},
                   {"reaction_N", r.table.reaction},
                   {"weight_N", r.table.weight}};
+  if (const SelfContact& c = m.self_contact; c.enabled())
+    j["self_contact"] = {{"gap_mm", c.gap / units::mm},
+                         {"pressure_kPa", c.pressure / 1e3},
+                         {"exclusion_mm", c.exclusion / units::mm},
+                         {"touching", r.contact.touching},
+                         {"min_distance_mm", r.contact.min_distance / units::mm},
+                         {"push_N", r.contact.push}};
   j["stiffness"] = {{"stretch", r.prepared.membrane.sheet.stiffness.stretch / units::N_per_mm},
                     {"shear", r.prepared.membrane.sheet.stiffness.shear / units::N_per_mm},
                     {"flex", r.prepared.membrane.sheet.stiffness.flex / units::N_per_mm}};
@@ -106,12 +113,11 @@ json radius_mm(double k) {
 
 // Energies, shape, curvature, stress of the end state.
 void report_form(const RunResult& r, json& j) {
-  j["energy"] = r.elastic_energy + r.bending_energy + r.gravity_energy + r.support_energy;
-  j["energy_parts"] = {{"elastic", r.elastic_energy},
-                       {"bending", r.bending_energy},
-                       {"gravity", r.gravity_energy},
-                       {"table", r.support_energy},
-                       {"kinetic", r.kinetic_energy}};
+  j["energy"] =
+      r.elastic_energy + r.bending_energy + r.gravity_energy + r.support_energy + r.contact_energy;
+  j["energy_parts"] = {{"elastic", r.elastic_energy},      {"bending", r.bending_energy},
+                       {"gravity", r.gravity_energy},      {"table", r.support_energy},
+                       {"self_contact", r.contact_energy}, {"kinetic", r.kinetic_energy}};
   j["shape"] = {{"height", r.shape.height / units::mm},
                 {"z_range", r.shape.z_range / units::mm},
                 {"global_height", r.shape.global_height / units::mm},
@@ -214,21 +220,21 @@ void report_branches(const RunResult& r, json& j) {
   j["branches"] = json::array();
   for (size_t b = 0; b < r.branches.size(); ++b) {
     const RunResult& f = r.branches[b].run;
-    j["branches"].push_back(
-        {{"index", b + 1},
-         {"count", r.branches[b].releases.size()},
-         {"releases", r.branches[b].releases},
-         {"height", f.shape.height / units::mm},
-         {"global_height", f.shape.global_height / units::mm},
-         {"total_K", f.curvature.total},
-         {"total_K_global", f.curvature_global.total},
-         {"classification", f.form_global},
-         {"quadric", f.shape.quadric.classification},
-         {"quadric_k1", f.shape.quadric.k1},
-         {"quadric_k2", f.shape.quadric.k2},
-         {"energy", f.elastic_energy + f.bending_energy + f.gravity_energy + f.support_energy},
-         {"self_intersection_pairs", f.self_intersection.pairs},
-         {"output", "branches/" + std::to_string(b + 1) + "/"}});
+    j["branches"].push_back({{"index", b + 1},
+                             {"count", r.branches[b].releases.size()},
+                             {"releases", r.branches[b].releases},
+                             {"height", f.shape.height / units::mm},
+                             {"global_height", f.shape.global_height / units::mm},
+                             {"total_K", f.curvature.total},
+                             {"total_K_global", f.curvature_global.total},
+                             {"classification", f.form_global},
+                             {"quadric", f.shape.quadric.classification},
+                             {"quadric_k1", f.shape.quadric.k1},
+                             {"quadric_k2", f.shape.quadric.k2},
+                             {"energy", f.elastic_energy + f.bending_energy + f.gravity_energy +
+                                            f.support_energy + f.contact_energy},
+                             {"self_intersection_pairs", f.self_intersection.pairs},
+                             {"output", "branches/" + std::to_string(b + 1) + "/"}});
   }
 }
 
@@ -277,7 +283,16 @@ json form_units() {
       {"table.touching", "particles (resting on the table)"},
       {"table.max_depth_mm", "mm (the deepest particle's depth in the table's soft contact)"},
       {"table.reaction_N", "N (the table's push; at rest, the piece's weight_N)"},
-      {"energy", "J (elastic + bending + gravitational potential + the table's contact)"},
+      {"energy",
+       "J (elastic + bending + gravitational potential + the table's contact + self-contact)"},
+      {"energy_parts.self_contact",
+       "J (the barrier keeping the sheet from passing through itself)"},
+      {"self_contact.gap_mm", "mm (the distance from which the barrier pushes)"},
+      {"self_contact.pressure_kPa", "kPa (the barrier's pressure scale)"},
+      {"self_contact.exclusion_mm", "mm (points this near on the natural sheet never touch)"},
+      {"self_contact.touching", "pairs (a point and a triangle nearer than the gap)"},
+      {"self_contact.min_distance_mm", "mm (the nearest listed pair; the gap when none)"},
+      {"self_contact.push_N", "N (the sum of the barrier's push on the touching points)"},
       {"energy_parts", "J"},
       {"shape.height", "mm (extent normal to the best-fit plane)"},
       {"shape.z_range", "mm"},

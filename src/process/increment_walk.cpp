@@ -11,12 +11,16 @@ IncrementWalk::IncrementWalk(Path path, const SimulationSpec& sim, bool adaptive
       path_tolerance_(sim.path_tolerance),
       adaptive_(adaptive) {}
 
-double IncrementWalk::begin(Points& x) {
+double IncrementWalk::begin(Points& x, const Model* model) {
   next_ = std::min(units(), at_ + step_);
   start_ = x;
   path_.set(t());
-  if (adaptive_ && motion_.cols() == x.cols())
-    x += (static_cast<double>(next_ - at_) / last_step_) * motion_;
+  if (adaptive_ && motion_.cols() == x.cols()) {
+    // A predictor that would carry the sheet through itself is shortened (self_contact.hpp).
+    const Points step = (static_cast<double>(next_ - at_) / last_step_) * motion_;
+    if (model) model->self_contact.refresh(x);
+    x += (model ? model->self_contact.step_limit(x, step, Points()) : 1.0) * step;
+  }
   // Intermediate increments only carry the sheet along the path: a looser tolerance there saves
   // their slow tails; the last one is solved in full.
   return tolerance();

@@ -131,7 +131,7 @@ void follow_increments(const Scene& scene, const PreparedScene& p, State& s,
     progress(q);
   };
   while (!walk.done() && !total.diverged) {
-    const double tolerance = walk.begin(s.x);
+    const double tolerance = walk.begin(s.x, &p.membrane.sheet.model);
     const SolveReport r =
         solve_scene_step(scene, p, s, walk.stage(name), along, nullptr, tolerance, nullptr, cache);
     if (r.out_of_time) {  // the run's budget is spent: stop here, not halve or go on

@@ -195,6 +195,8 @@ PreparedScene prepare_continuum(const Scene& scene) {
   m.gravity = Vec3(0.0, 0.0, -scene.simulation.gravity);
   m.velocity_damping = scene.simulation.damping;
   place_support(scene, m);
+  if (const SelfContactSpec& c = scene.simulation.self_contact; c.on)
+    m.self_contact.cover(p.membrane.sheet.triangles, m.reference, c.gap, c.pressure, c.exclusion);
   p.force_scale = p.membrane.sheet.stiffness.stretch * p.membrane.sheet.mesh.mean_edge;
   return p;
 }

@@ -196,6 +196,17 @@ std::string crossing_place(const SelfIntersection& si) {
   return std::to_string(si.pairs) + " pairs of triangles cross, around " + at;
 }
 
+// What keeps a form from crossing itself, for the scene as it was run.
+std::string contact_advice(const Scene& scene) {
+  if (scene.model == SheetModel::lattice)
+    return "The lattice has no self-contact: run the continuum with it (--set model=continuum "
+           "--set simulation.self_contact=true), or try another perturbation or seed";
+  if (!scene.simulation.self_contact.on)
+    return "Run it with self-contact (--set simulation.self_contact=true)";
+  return "Self-contact keeps points off triangles, not an edge off an edge: a finer mesh or a "
+         "larger simulation.self_contact.gap";
+}
+
 }  // namespace
 
 std::vector<std::string> run_warnings(const Scene& scene, const RunResult& r) {
@@ -204,10 +215,9 @@ std::vector<std::string> run_warnings(const Scene& scene, const RunResult& r) {
   if (r.solve.diverged) return out;
   if (r.self_intersection.pairs > 0)
     out.push_back("the form passes through itself: " + crossing_place(r.self_intersection) +
-                  " (final.obj's frame). membra has no self-contact, so no real sheet takes this "
-                  "form there: try another perturbation or seed of the release, or more "
-                  "increments, and compare (docs/measures.md, \"A form that passes through "
-                  "itself\")");
+                  " (final.obj's frame); no real sheet takes this form there. " +
+                  contact_advice(scene) +
+                  " (docs/measures.md, \"A form that passes through itself\")");
   // The other forms simulation.explore found, each written to branches/k/ (the one release 0,
   // the scene's own, ended in is the run's form, said above).
   for (size_t k = 0; k < r.branches.size(); ++k)

@@ -61,7 +61,8 @@ SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
     row.stable = r.stability.checked && r.stability.stable;
     read_sheet(r.prepared.membrane.sheet, row);
     row.form = {r.form_global, r.curvature_global.total, r.shape.global_height,
-                r.elastic_energy + r.bending_energy + r.gravity_energy + r.support_energy};
+                r.elastic_energy + r.bending_energy + r.gravity_energy + r.support_energy +
+                    r.contact_energy};
   } catch (const OverBudget&) {
     row.over_budget = true;
     row.report.converged = false;

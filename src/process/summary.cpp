@@ -29,6 +29,8 @@ void summarize_form(RunResult& r) {
   r.gravity_energy = gravity_energy(m, s.x);
   r.support_energy = energy_of_kind(m, s.x, EnergyKind::support);
   r.table = m.table.read(s.x);
+  r.contact_energy = energy_of_kind(m, s.x, EnergyKind::contact);
+  r.contact = m.self_contact.read(s.x);
   r.kinetic_energy = kinetic_energy(m, s.v);
   r.shape = summarize_shape(s.x, m.reference);
   r.curvature = gaussian_curvature(s.x, mem.sheet.triangles);

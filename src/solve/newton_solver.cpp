@@ -63,7 +63,7 @@ Eigen::VectorXd shift_metric(const HessianAssembler& h, double& floor) {
 class Newton {
  public:
   Newton(const Model& model, Points& x, const std::vector<int>& dof, int ndof,
-         const NewtonOptions& o, SolveReport& r, NewtonWorkspace& ws)
+         const NewtonOptions& o, SolveReport& r, std::unique_ptr<NewtonWorkspace>& ws)
       : model_(model),
         x_(x),
         dof_(dof),
@@ -71,9 +71,6 @@ class Newton {
         o_(o),
         r_(r),
         ws_(ws),
-        exact_(ws.exact),
-        projected_(ws.projected),
-        llt_(ws.llt),
         tangent_(model, dof, ndof) {
     length_ = saddle_escape_length(model);
     shifted_search_ = model.membrane_triangles.size() > 0;
@@ -101,6 +98,9 @@ class Newton {
   Eigen::VectorXd gradient() const { return gradient(f_); }
   Points moved(const Eigen::VectorXd& d, double alpha, const Eigen::VectorXd& e = {}) const;
   void evaluate();
+  void refresh_contact();
+  Points displacement(const Eigen::VectorXd& v) const;
+  double contact_step_limit(const Eigen::VectorXd& d, const Eigen::VectorXd& e) const;
 
   const Model& model_;
   Points& x_;
@@ -108,9 +108,7 @@ class Newton {
   int ndof_;
   const NewtonOptions& o_;
   SolveReport& r_;
-  NewtonWorkspace& ws_;
-  HessianAssembler &exact_, &projected_;  // the workspace's
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>& llt_;
+  std::unique_ptr<NewtonWorkspace>& ws_;  // set up again when self-contact's pairs change
   TangentCorrection tangent_;
   Points f_;
   double energy_ = 0.0;
@@ -134,6 +132,34 @@ void Newton::evaluate() {
   energy_ = potential_energy(model_, x_);
   r_.residual = max_free_force(model_, f_);
   r_.residual_relative = r_.residual / o_.force_scale;
+}
+
+// Self-contact's pairs gathered again where the sheet has come near itself
+// (model/elements/self_contact.hpp): a changed list changes the Hessian's pattern, so the
+// workspace is set up again, and the energy and forces are those of the new list.
+void Newton::refresh_contact() {
+  if (!model_.self_contact.refresh(x_)) return;
+  ws_.reset();
+  ws_ = std::make_unique<NewtonWorkspace>(model_, dof_, ndof_);
+  ++r_.setups;
+  exact_x_.resize(3, 0);
+  tangent_.forget_pattern();
+  evaluate();
+}
+
+// The motion of every particle for the free coordinates v (zero on held ones).
+Points Newton::displacement(const Eigen::VectorXd& v) const {
+  Points dx = Points::Zero(3, x_.cols());
+  for (size_t k = 0; k < dof_.size(); ++k)
+    if (const int i = dof_[k]; i >= 0) dx.data()[k] = v[i];
+  return dx;
+}
+
+// The share of the step x + alpha d + alpha^2 e that self-contact allows (1 without it).
+double Newton::contact_step_limit(const Eigen::VectorXd& d, const Eigen::VectorXd& e) const {
+  if (!model_.self_contact.enabled()) return 1.0;
+  const Points ed = e.size() == d.size() ? displacement(e) : Points();
+  return model_.self_contact.step_limit(x_, displacement(d), ed);
 }
 
 Eigen::VectorXd Newton::gradient(const Points& f) const {
@@ -176,7 +202,7 @@ Eigen::VectorXd Newton::corrected(const Eigen::VectorXd& d, const HessianAssembl
 
 bool Newton::factorize(const Eigen::SparseMatrix<double>& a) {
   ++r_.factorizations;
-  return ws_.factorize(a);
+  return ws_->factorize(a);
 }
 
 // Backtracking on the energy along d: alpha is accepted when the energy falls by at least 1e-4
@@ -185,7 +211,7 @@ bool Newton::factorize(const Eigen::SparseMatrix<double>& a) {
 // lowers the residual is accepted too.
 bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvature,
                          const Eigen::VectorXd& e) {
-  double alpha = 1.0;
+  double alpha = contact_step_limit(d, e);
   for (int k = 0; k < 40; ++k, alpha *= 0.5) {
     Points xt = moved(d, alpha, e);
     const double et = potential_energy(model_, xt);
@@ -216,35 +242,36 @@ bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvatur
 bool Newton::exact_is_positive_definite() {
   assemble_exact();
   double floor = 0.0;
-  const Eigen::VectorXd diag = shift_metric(exact_, floor);
-  exact_.add_to_diagonal((1e-10 * diag).array() + floor);
-  return factorize(exact_.lower());
+  const Eigen::VectorXd diag = shift_metric(ws_->exact, floor);
+  ws_->exact.add_to_diagonal((1e-10 * diag).array() + floor);
+  return factorize(ws_->exact.lower());
 }
 
 void Newton::assemble_exact() {
-  exact_.assemble(x_, false);
+  ws_->exact.assemble(x_, false);
   exact_x_ = x_;
 }
 
 bool Newton::exact_step() {
   if (!exact_is_positive_definite()) return false;
   const Eigen::VectorXd g = gradient();
-  const Eigen::VectorXd d = llt_.solve(-g);
+  const Eigen::VectorXd d = ws_->llt.solve(-g);
   const double slope = g.dot(d);
-  return slope < 0.0 && line_search(d, slope, 0.0, corrected(d, exact_));
+  return slope < 0.0 && line_search(d, slope, 0.0, corrected(d, ws_->exact));
 }
 
 // Factorizes the projected Hessian at x plus mu times its diagonal, growing mu (remembered
 // across iterations) until the factorization succeeds.
 bool Newton::factor_projected() {
-  projected_.assemble(x_, true);
+  ws_->projected.assemble(x_, true);
   double floor = 0.0;
-  const Eigen::VectorXd diag = shift_metric(projected_, floor);
+  const Eigen::VectorXd diag = shift_metric(ws_->projected, floor);
   double applied = 0.0;
   for (int attempt = 0; attempt < 20; ++attempt, mu_ *= 10.0) {
-    projected_.add_to_diagonal(((mu_ - applied) * diag).array() + (applied == 0.0 ? floor : 0.0));
+    ws_->projected.add_to_diagonal(((mu_ - applied) * diag).array() +
+                                   (applied == 0.0 ? floor : 0.0));
     applied = mu_;
-    if (factorize(projected_.lower())) return true;
+    if (factorize(ws_->projected.lower())) return true;
   }
   return false;
 }
@@ -253,7 +280,7 @@ bool Newton::factor_projected() {
 // (the same numbers as a new assembly), or assembled anew where it was not tried here.
 void Newton::exact_here() {
   if (exact_x_.cols() == x_.cols() && exact_x_ == x_)
-    exact_.remove_shifts();
+    ws_->exact.remove_shifts();
   else
     assemble_exact();
 }
@@ -278,21 +305,21 @@ bool Newton::negative_curvature(Eigen::VectorXd& v, double& curvature) {
   exact_here();
   v = last_negative_curvature();
   for (int it = 0; it < 8; ++it) {
-    v = llt_.solve(projected_.multiply(v) - exact_.multiply(v));
+    v = ws_->llt.solve(ws_->projected.multiply(v) - ws_->exact.multiply(v));
     v /= v.norm();
   }
   nc_ = v;
   return escape_direction(v, curvature);
 }
 
-// Scales a direction v of negative curvature of exact_ to move no particle by more than the
+// Scales a direction v of negative curvature of ws_->exact to move no particle by more than the
 // escape length and turns it downhill, or (at an exact saddle) so that it continues the sheet's
 // present out-of-plane displacement, so the side is the seeded perturbation's (resin_side); false
 // if v.Hv is not negative.
 bool Newton::escape_direction(Eigen::VectorXd& v, double& curvature) const {
   const Points dv = moved(v, 1.0) - x_;
   const double largest = dv.colwise().norm().maxCoeff();
-  if (!(v.dot(exact_.multiply(v)) < 0.0) || !(largest > 0.0)) return false;
+  if (!(v.dot(ws_->exact.multiply(v)) < 0.0) || !(largest > 0.0)) return false;
   v *= length_ / largest;
   const Eigen::VectorXd g = gradient();
   const double slope = g.dot(v);
@@ -302,26 +329,26 @@ bool Newton::escape_direction(Eigen::VectorXd& v, double& curvature) const {
   } else if (slope > 0.0) {
     v = -v;
   }
-  curvature = v.dot(exact_.multiply(v));
+  curvature = v.dot(ws_->exact.multiply(v));
   return true;
 }
 
 // Where the power iteration finds no negative curvature (a small negative eigenvalue among the
 // wrinkling latex's soft modes): the exact Hessian's most negative curvature by the shifted
-// Lanczos search (negative_curvature.hpp), scaled and turned by escape_direction. Leaves llt_
+// Lanczos search (negative_curvature.hpp), scaled and turned by escape_direction. Leaves ws_->llt
 // holding the shifted exact matrix; the shift's ladder starts a decade below its last success.
 bool Newton::shifted_negative_curvature(Eigen::VectorXd& v, double& curvature) {
   // One search per stall: the clock restarts whatever it finds, so a search that finds nothing
   // (or a step that escapes) is not repeated at every iteration while the residual recovers.
   reference_residual_ = r_.residual;
   stalled_ = 0;
-  // exact_ is at x without shifts: negative_curvature has just made it so.
+  // ws_->exact is at x without shifts: negative_curvature has just made it so.
   double floor = 0.0;
-  const Eigen::VectorXd metric = shift_metric(exact_, floor).array() + floor;
-  const CurvatureSearch s =
-      most_negative_curvature(exact_, metric, last_negative_curvature(), escape_shift_ / 10.0,
-                              {[this](const auto& a) { return factorize(a); },
-                               [this](const auto& b) { return Eigen::VectorXd(llt_.solve(b)); }});
+  const Eigen::VectorXd metric = shift_metric(ws_->exact, floor).array() + floor;
+  const CurvatureSearch s = most_negative_curvature(
+      ws_->exact, metric, last_negative_curvature(), escape_shift_ / 10.0,
+      {[this](const auto& a) { return factorize(a); },
+       [this](const auto& b) { return Eigen::VectorXd(ws_->llt.solve(b)); }});
   if (!s.found) return false;
   escape_shift_ = std::max(s.shift, 1e-9);
   nc_ = s.direction;
@@ -334,7 +361,7 @@ bool Newton::shifted_negative_curvature(Eigen::VectorXd& v, double& curvature) {
 // along negative curvature, where the quadratic model has no minimum).
 bool Newton::indefinite_step() {
   const Eigen::VectorXd g = gradient();
-  const Eigen::VectorXd d = llt_.solve(-g);
+  const Eigen::VectorXd d = ws_->llt.solve(-g);
   const double slope = g.dot(d);
   Eigen::VectorXd v;
   double curvature = 0.0;
@@ -376,18 +403,18 @@ bool Newton::indefinite_step() {
 bool Newton::continuation_step() {
   assemble_exact();
   double floor = 0.0;
-  const Eigen::VectorXd diag = shift_metric(exact_, floor);
+  const Eigen::VectorXd diag = shift_metric(ws_->exact, floor);
   double applied = 0.0;
   bool factored = false;
   for (int attempt = 0; attempt < 30 && !factored; ++attempt) {
     if (attempt > 0) ptc_shift_ *= 4.0;
-    exact_.add_to_diagonal(((ptc_shift_ - applied) * diag).array() +
-                           (applied == 0.0 ? floor : 0.0));
+    ws_->exact.add_to_diagonal(((ptc_shift_ - applied) * diag).array() +
+                               (applied == 0.0 ? floor : 0.0));
     applied = ptc_shift_;
-    factored = factorize(exact_.lower());
+    factored = factorize(ws_->exact.lower());
   }
   if (!factored) return false;
-  const Eigen::VectorXd d = llt_.solve(-gradient());
+  const Eigen::VectorXd d = ws_->llt.solve(-gradient());
   Points xt = moved(d, 1.0);
   const double et = potential_energy(model_, xt);
   Points ft;
@@ -413,6 +440,7 @@ void Newton::run(const Stopwatch& clock) {
   evaluate();
   bool exact_recent = false;  // the last step was a Newton step on a positive definite Hessian
   for (long it = 0;; ++it) {
+    refresh_contact();
     if (!std::isfinite(r_.residual) || !std::isfinite(energy_)) {
       r_.diverged = true;
       r_.message = "newton diverged at iteration " + std::to_string(it) +
@@ -512,8 +540,9 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
     ws = std::make_unique<NewtonWorkspace>(m, dof, ndof);
     ++r.setups;
   }
-  Newton newton(m, x, dof, ndof, o, r, *ws);
+  Newton newton(m, x, dof, ndof, o, r, ws);
   newton.run(clock);
+  if (&m != &model) model.self_contact.take_pairs(m.self_contact);
   state.x = gauged ? Points(gauge.rotation.transpose() * x) : x;
   state.v.setZero(3, n);
   r.wall_seconds = clock.seconds();

@@ -28,6 +28,10 @@ TangentCorrection::TangentCorrection(const Model& model, const std::vector<int>&
   factor_->llt.cholmod().print = 0;
 }
 
+void TangentCorrection::forget_pattern() {
+  factor_->analysed_nonzeros = -1;
+}
+
 // ndof x 2m: columns 2k and 2k + 1 are two orthonormal tangents at movable particle k, on its
 // free coordinates (every coordinate entered, zeros too, so the pattern does not change).
 Eigen::SparseMatrix<double> TangentCorrection::basis(const Points& x) const {

@@ -272,7 +272,7 @@ SliceReport ViewerSession::advance_slice(long max_iterations, double max_seconds
     // The next increment of the path, as follow_path takes it.
     walk_.accept(m.state.x, r.iterations);
     if (!walk_.done()) {
-      walk_.begin(m.state.x);
+      walk_.begin(m.state.x, &m.sheet.model);
       model_changed();
       return rep;
     }
@@ -369,7 +369,7 @@ void ViewerSession::start_path(Path path) {
   // increment at once, as follow_path takes it: the step's perturbation must still be there when
   // the change begins, or the sheet relaxes it away and buckles on round-off.
   walk_ = IncrementWalk(std::move(path), scene_.simulation, false);
-  walk_.begin(prepared_.membrane.state.x);
+  walk_.begin(prepared_.membrane.state.x, &prepared_.membrane.sheet.model);
 }
 
 Scene ViewerSession::to_scene() const {

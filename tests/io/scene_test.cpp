@@ -514,3 +514,47 @@ TEST(MemoryEstimate, RefusesGridsTheMachineCannotHold) {
 
 }  // namespace
 }  // namespace membra
+
+namespace membra {
+namespace scene_self_contact_test {
+
+// simulation.self_contact: true (defaults) or an object in mm and kPa; only on the continuum
+// sheet and with Newton, and with an exclusion no smaller than the gap.
+TEST(Scene, ReadsSelfContactAndSaysWhereItCannotHold) {
+  json j = json::parse(R"({
+    "name": "t", "model": "continuum", "sheet": {"size": [100, 50], "resolution": [11, 6]},
+    "simulation": {"solver": "newton", "G": 0, "self_contact": true}
+  })");
+  SelfContactSpec c = parse_scene(j).simulation.self_contact;
+  EXPECT_TRUE(c.on);
+  EXPECT_DOUBLE_EQ(c.gap, 1e-3);
+  EXPECT_DOUBLE_EQ(c.exclusion, 3e-3);
+  j["simulation"]["self_contact"] = {{"gap", 0.5}, {"pressure", 2.0}};
+  c = parse_scene(j).simulation.self_contact;
+  EXPECT_DOUBLE_EQ(c.gap, 5e-4);
+  EXPECT_DOUBLE_EQ(c.pressure, 2000.0);
+  EXPECT_DOUBLE_EQ(c.exclusion, 1.5e-3);
+  j["simulation"]["self_contact"] = false;
+  EXPECT_FALSE(parse_scene(j).simulation.self_contact.on);
+  auto where = [](const json& scene) {
+    try {
+      parse_scene(scene);
+    } catch (const InputError& e) {
+      return e.where();
+    }
+    return std::string();
+  };
+  j["simulation"]["self_contact"] = {{"gap", 1.0}, {"exclusion", 0.5}};
+  EXPECT_EQ(where(j), "/simulation/self_contact/exclusion");
+  j["simulation"]["self_contact"] = {{"gap", -1.0}};
+  EXPECT_EQ(where(j), "/simulation/self_contact/gap");
+  j["simulation"]["self_contact"] = true;
+  j["simulation"]["solver"] = "static";
+  EXPECT_EQ(where(j), "/simulation/self_contact");
+  j["simulation"]["solver"] = "newton";
+  j["model"] = "lattice";
+  EXPECT_EQ(where(j), "/simulation/self_contact");
+}
+
+}  // namespace scene_self_contact_test
+}  // namespace membra

@@ -9,6 +9,7 @@
 #include "membra/model/elements/bending.hpp"
 #include "membra/model/elements/hinges.hpp"
 #include "membra/model/elements/membrane_triangles.hpp"
+#include "membra/model/elements/self_contact.hpp"
 #include "membra/model/elements/shell_triangles.hpp"
 #include "membra/model/elements/springs.hpp"
 #include "membra/model/elements/table_contact.hpp"
@@ -25,7 +26,8 @@ struct Model {
   MembraneTriangles membrane_triangles;  // the continuum sheet; empty on a lattice
   ShellTriangles shell_triangles;        // its bending; empty on a lattice
   TableContact table;  // the plane the piece rests on; empty unless simulation.support is "table"
-  Points reference;    // paper position of each particle in the flat natural sheet, m
+  SelfContact self_contact;       // the continuum sheet against itself; empty unless asked for
+  Points reference;               // paper position of each particle in the flat natural sheet, m
   Vec3 gravity = Vec3::Zero();    // acceleration, m/s^2
   double velocity_damping = 0.0;  // D, 1/s: every particle feels -D m v
 
@@ -41,6 +43,7 @@ struct Model {
     f(membrane_triangles);
     f(shell_triangles);
     f(table);
+    f(self_contact);
   }
   template <typename F>
   void for_each_set(F&& f) {
@@ -51,6 +54,7 @@ struct Model {
     f(membrane_triangles);
     f(shell_triangles);
     f(table);
+    f(self_contact);
   }
 
   // Calls f(set, other's set of the same kind) for every element set, in the same order.
@@ -63,6 +67,7 @@ struct Model {
     f(membrane_triangles, other.membrane_triangles);
     f(shell_triangles, other.shell_triangles);
     f(table, other.table);
+    f(self_contact, other.self_contact);
   }
 
   int num_particles() const { return static_cast<int>(mass.size()); }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "membra/core/vec.hpp"
+#include "membra/model/model.hpp"
 #include "membra/process/path.hpp"
 #include "membra/process/scene.hpp"
 
@@ -24,9 +25,10 @@ class IncrementWalk {
 
   // Every increment accepted (a path that is not gradual: at once).
   bool done() const { return path_.kind != Path::Kind::gradual || at_ >= units(); }
-  // Begins the next increment: sets the path at its end and, adaptive, moves x by the predictor.
+  // Begins the next increment: sets the path at its end and, adaptive, moves x by the predictor,
+  // no further than the self-contact of `model` allows (if given and it has any).
   // Returns the tolerance its solve should reach.
-  double begin(Points& x);
+  double begin(Points& x, const Model* model = nullptr);
   // The share of the path accepted so far, in [0, 1].
   double done_fraction() const { return units() > 0 ? static_cast<double>(at_) / units() : 1.0; }
   // The position at the end of the increment begun, in (0, 1].

@@ -67,8 +67,10 @@ struct RunResult {
   double bending_energy = 0.0;  // J, bending elements and bilayer hinges
   double gravity_energy = 0.0;  // J
   double support_energy = 0.0;  // J, the table's contact (simulation.support)
+  double contact_energy = 0.0;  // J, the sheet's contact with itself (simulation.self_contact)
   double kinetic_energy = 0.0;  // J
   TableReading table;           // what the table does (simulation.support "table")
+  ContactReading contact;       // what self-contact does (simulation.self_contact)
   ShapeSummary shape;
   GaussianCurvature curvature;  // densities smoothed on the grid
   std::string form;             // classify_form(curvature)

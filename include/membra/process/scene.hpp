@@ -23,6 +23,15 @@ namespace membra {
 enum class Support { none, table };
 const char* to_string(Support support);
 
+// The continuum sheet's contact with itself (model/elements/self_contact.hpp,
+// docs/model.md, "Self-contact"): `simulation.self_contact`.
+struct SelfContactSpec {
+  bool on = false;
+  double gap = 1e-3;        // m, where the barrier begins
+  double pressure = 1e3;    // Pa, its push per area at about half the gap is 4.3 times this
+  double exclusion = 3e-3;  // m, points nearer than this on the natural sheet never touch
+};
+
 // How to simulate: the paper's K, G, T, D and the run length.
 struct SimulationSpec {
   Solver solver = Solver::newton;  // solve/solver.hpp has the table
@@ -57,6 +66,7 @@ struct SimulationSpec {
   // (solve/tangent_correction.hpp); false: straight steps, for comparison.
   bool tangent_correction = true;
   Support support = Support::none;
+  SelfContactSpec self_contact;
 
   // True for the equilibrium solvers (static, newton), false for time stepping.
   bool is_static() const { return solver_info(solver).equilibrium; }

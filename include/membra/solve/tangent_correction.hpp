@@ -37,6 +37,8 @@ class TangentCorrection {
   // solve: the restricted matrix's pattern is fixed while the sheet's elements are).
   long factorizations() const { return factorizations_; }
   long analyses() const { return analyses_; }
+  // The Hessian's pattern changed (self-contact's pairs): analyse it again at the next solve.
+  void forget_pattern();
 
  private:
   Eigen::SparseMatrix<double> basis(const Points& x) const;

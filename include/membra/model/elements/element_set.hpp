@@ -18,8 +18,8 @@
 namespace membra {
 
 // Which energy an element stores, for the report's split (stretching or bending; a support's
-// contact is neither).
-enum class EnergyKind { stretching, bending, support };
+// contact and the sheet's contact with itself are neither).
+enum class EnergyKind { stretching, bending, support, contact };
 
 // Where the release stands: latex rest lengths move from their frame length (level 1) to their
 // natural length (level 0) once the release has begun (docs/process.md).
