@@ -148,6 +148,29 @@ void BM_SelfIntersection(benchmark::State& state) {
 }
 BENCHMARK(BM_SelfIntersection)->Arg(10)->Arg(3)->Unit(benchmark::kMillisecond);
 
+// What self-contact (self_contact.hpp) adds to every Newton iteration on a sheet that does not
+// touch itself: the check for pairs nearer than 1.5 gaps, and the step limit of a step moving
+// each particle up to 2 mm, on the same meshes and saddle.
+void BM_SelfContactRefresh(benchmark::State& state) {
+  const BentMesh b(state.range(0));
+  membra::SelfContact c;
+  c.cover(b.sheet.triangles, b.sheet.model.reference, 1e-3, 1e3, 3e-3);
+  for (auto _ : state) benchmark::DoNotOptimize(c.refresh(b.x));
+  set_per_item(state, b.sheet.model.num_particles());  // ns per particle
+}
+BENCHMARK(BM_SelfContactRefresh)->Arg(10)->Arg(3)->Unit(benchmark::kMillisecond);
+
+void BM_SelfContactStepLimit(benchmark::State& state) {
+  const BentMesh b(state.range(0));
+  membra::SelfContact c;
+  c.cover(b.sheet.triangles, b.sheet.model.reference, 1e-3, 1e3, 3e-3);
+  c.refresh(b.x);
+  const Points step = 1e-3 * Points::Random(3, b.x.cols());
+  for (auto _ : state) benchmark::DoNotOptimize(c.step_limit(b.x, step, Points()));
+  set_per_item(state, b.sheet.model.num_particles());  // ns per particle
+}
+BENCHMARK(BM_SelfContactStepLimit)->Arg(10)->Arg(3)->Unit(benchmark::kMillisecond);
+
 // A latex sheet with bending, n x n, bent out of plane into a saddle so that every element's
 // Hessian is nontrivial, with every coordinate free (dof k is coordinate k).
 struct BentSheet {

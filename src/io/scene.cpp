@@ -181,10 +181,11 @@ void parse_self_contact(const JsonObject& s, SelfContactSpec& c) {
   c.gap = o.number("gap", c.gap / units::mm, Bounds{0.0, 100.0, true}) * units::mm;
   c.pressure = o.number("pressure", c.pressure / 1e3, Bounds{0.0, 1e6, true}) * 1e3;
   c.exclusion = o.number("exclusion", 3.0 * c.gap / units::mm, Bounds::positive()) * units::mm;
-  if (c.exclusion < c.gap)
+  if (c.exclusion < 2.0 * c.gap)
     throw InputError(o.pointer("exclusion"),
-                     "points nearer than the gap on the natural sheet must not touch: make the "
-                     "exclusion at least the gap");
+                     "pairs are listed up to two gaps apart, so neighbours in the material nearer "
+                     "than that would press on each other in the plane: make the exclusion at "
+                     "least twice the gap");
 }
 
 void parse_simulation(const JsonObject& top, Scene& scene) {

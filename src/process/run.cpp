@@ -202,7 +202,9 @@ std::string contact_advice(const Scene& scene) {
     return "The lattice has no self-contact: run the continuum with it (--set model=continuum "
            "--set simulation.self_contact=true), or try another perturbation or seed";
   if (!scene.simulation.self_contact.on)
-    return "Run it with self-contact (--set simulation.self_contact=true)";
+    return std::string("Run it with self-contact (--set simulation.self_contact=true") +
+           (scene.simulation.solver == Solver::newton ? "" : " --set simulation.solver=newton") +
+           ")";
   return "Self-contact keeps points off triangles, not an edge off an edge: a finer mesh or a "
          "larger simulation.self_contact.gap";
 }

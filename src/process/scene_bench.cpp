@@ -47,6 +47,9 @@ SceneBenchRow bench_scene(Scene scene, Solver solver, double budget) {
   row.increments = path_increments(scene);
   const Stopwatch clock;
   try {
+    if (scene.simulation.self_contact.on && solver != Solver::newton)
+      throw std::invalid_argument(
+          "self-contact is kept by Newton's line search; this solver would step through it");
     const RunResult r = run_scene(scene, [&](const Progress&) {
       if (clock.seconds() > budget) throw OverBudget();
     });

@@ -112,10 +112,10 @@ class Newton {
   TangentCorrection tangent_;
   Points f_;
   double energy_ = 0.0;
-  double mu_ = 1e-8;       // shift of the projected matrix, in units of its diagonal
-  double length_ = 1.0;    // m, the scale of a saddle escape (saddle_escape_length)
-  bool try_exact_ = true;  // the last steps suggest the Hessian is positive definite
-  double last_alpha_ = 0.0;
+  double mu_ = 1e-8;            // shift of the projected matrix, in units of its diagonal
+  double length_ = 1.0;         // m, the scale of a saddle escape (saddle_escape_length)
+  bool try_exact_ = true;       // the last steps suggest the Hessian is positive definite
+  double last_alpha_ = 0.0;     // the accepted step's share of the longest the line search allowed
   double ptc_shift_ = 1.0;      // continuation: 1/h^2, the implicit-Euler shift, units of diag|H|
   Eigen::VectorXd nc_;          // the last direction of negative curvature (the searches' start)
   double escape_shift_ = 1e-8;  // the shifted search's last working shift, units of diag|H|
@@ -211,7 +211,8 @@ bool Newton::factorize(const Eigen::SparseMatrix<double>& a) {
 // lowers the residual is accepted too.
 bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvature,
                          const Eigen::VectorXd& e) {
-  double alpha = contact_step_limit(d, e);
+  const double longest = contact_step_limit(d, e);  // 1 without self-contact
+  double alpha = longest;
   for (int k = 0; k < 40; ++k, alpha *= 0.5) {
     Points xt = moved(d, alpha, e);
     const double et = potential_energy(model_, xt);
@@ -230,7 +231,7 @@ bool Newton::line_search(const Eigen::VectorXd& d, double slope, double curvatur
     energy_ = et;
     r_.residual = residual;
     r_.residual_relative = residual / o_.force_scale;
-    last_alpha_ = alpha;
+    last_alpha_ = alpha / longest;
     return true;
   }
   return false;
@@ -414,7 +415,9 @@ bool Newton::continuation_step() {
     factored = factorize(ws_->exact.lower());
   }
   if (!factored) return false;
-  const Eigen::VectorXd d = ws_->llt.solve(-gradient());
+  // Self-contact: no further than the contact allows (the step is not line-searched).
+  Eigen::VectorXd d = ws_->llt.solve(-gradient());
+  d *= contact_step_limit(d, {});
   Points xt = moved(d, 1.0);
   const double et = potential_energy(model_, xt);
   Points ft;
@@ -444,7 +447,8 @@ void Newton::run(const Stopwatch& clock) {
     if (!std::isfinite(r_.residual) || !std::isfinite(energy_)) {
       r_.diverged = true;
       r_.message = "newton diverged at iteration " + std::to_string(it) +
-                   ": forces became NaN/Inf. Try more increments or the static solver.";
+                   ": forces became NaN/Inf. Try more increments" +
+                   (model_.self_contact.enabled() ? std::string(".") : " or the static solver.");
       return;
     }
     if (o_.progress)
@@ -529,6 +533,8 @@ SolveReport solve_newton(const Model& model, State& state, const NewtonOptions& 
   }
   // The cache's workspace when no other solve holds it and it fits this sheet; else a new one,
   // kept in the cache (when free) for the next solve.
+  // Self-contact's pairs gathered here first, so that a cached workspace is judged against them.
+  m.self_contact.refresh(x);
   std::unique_lock<std::mutex> lock;
   if (o.cache) lock = std::unique_lock<std::mutex>(o.cache->in_use, std::try_to_lock);
   std::unique_ptr<NewtonWorkspace> own;

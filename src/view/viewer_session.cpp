@@ -54,6 +54,10 @@ ViewerSession::ViewerSession(Scene scene)
   if (const auto* s = first_step<StretchStep>()) params_.lambda = s->lambda;
   if (!scene_.simulation.is_static()) mode_ = LiveMode::dynamics;
   if (const auto coarse = coarse_grid(scene_)) grid_warning_ = coarse->message;
+  if (scene_.simulation.self_contact.on)
+    grid_warning_ += std::string(grid_warning_.empty() ? "" : "; ") +
+                     "self-contact is not applied to the live relaxation (FIRE): a form here may "
+                     "pass through itself; membra run applies it";
 }
 
 std::optional<PatternSpec> ViewerSession::resin_pattern_spec() const {
@@ -384,8 +388,10 @@ Scene ViewerSession::to_scene() const {
     s.simulation.damping = params_.D;
     // The live relaxation is FIRE whatever the scene names: a saved session names it, so that
     // `membra run` takes the same path to the same form (docs/viewer.md).
-    if (mode_ == LiveMode::relax && s.simulation.is_static())
+    if (mode_ == LiveMode::relax && s.simulation.is_static()) {
       s.simulation.solver = Solver::static_fire;
+      s.simulation.self_contact.on = false;  // FIRE does not hold it, and the viewer did not
+    }
     // A smaller T shortens the run's simulated time: keep it long enough for the scene's ramp.
     SimulationSpec& sim = s.simulation;
     if (sim.ramp_seconds > 0.0 && sim.ramp_seconds > static_cast<double>(sim.steps) * sim.dt)

@@ -544,7 +544,7 @@ TEST(Scene, ReadsSelfContactAndSaysWhereItCannotHold) {
     }
     return std::string();
   };
-  j["simulation"]["self_contact"] = {{"gap", 1.0}, {"exclusion", 0.5}};
+  j["simulation"]["self_contact"] = {{"gap", 1.0}, {"exclusion", 1.5}};  // under two gaps
   EXPECT_EQ(where(j), "/simulation/self_contact/exclusion");
   j["simulation"]["self_contact"] = {{"gap", -1.0}};
   EXPECT_EQ(where(j), "/simulation/self_contact/gap");

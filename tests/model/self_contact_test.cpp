@@ -51,6 +51,17 @@ TEST(SelfContactKernel, DistanceIsTheNearestPointOfTheTriangle) {
   }
 }
 
+// A triangle crushed to a segment, or two of its corners together: the distance is to the
+// segment, and the gradient finite.
+TEST(SelfContactKernel, ACollapsedTriangleIsMeasuredByItsEdges) {
+  const Vec3 a(0, 0, 0), b(0.01, 0, 0), p(0.004, 0.0003, 0.0004);
+  for (const Vec3& c : {Vec3(0.005, 0, 0), Vec3(0.01, 0, 0), Vec3(0, 0, 0)}) {
+    EXPECT_NEAR(std::sqrt(point_triangle_distance(p, a, b, c).d2), 5e-4, 1e-12);
+    EXPECT_TRUE(contact_gradient(p, a, b, c, 1e9, 1e-6).allFinite());
+    EXPECT_TRUE(contact_hessian(p, a, b, c, 1e9, 1e-6, true).allFinite());
+  }
+}
+
 TEST(SelfContactKernel, BarrierVanishesSmoothlyAtTheGapAndGrowsWithoutBound) {
   const double g2 = 1e-6;
   const BarrierValue at = contact_barrier(g2 * (1.0 - 1e-6), g2);
@@ -66,22 +77,32 @@ TEST(SelfContactKernel, BarrierVanishesSmoothlyAtTheGapAndGrowsWithoutBound) {
   EXPECT_LT(contact_barrier(0.25 * g2, g2).first, 0.0);  // pushes apart
 }
 
+using Four = std::array<Vec3, 4>;
+
+// Central differences of f (a 12-vector, or a number as a 1-vector, of the point and the
+// triangle's corners) in each of the 12 coordinates, as the columns of a matrix.
+template <int Rows, typename F>
+Eigen::Matrix<double, Rows, 12> differences(const Four& x, double h, F f) {
+  Eigen::Matrix<double, Rows, 12> out;
+  for (int c = 0; c < 12; ++c) {
+    Four xp = x, xm = x;
+    xp[static_cast<size_t>(c / 3)][c % 3] += h;
+    xm[static_cast<size_t>(c / 3)][c % 3] -= h;
+    out.col(c) = (f(xp) - f(xm)) / (2.0 * h);
+  }
+  return out;
+}
+
 TEST(SelfContactKernel, GradientMatchesDifferencesOfTheEnergy) {
   const double w = 1e9, g2 = 1e-6;
   for (const Vec3& p : points_in_every_region()) {
-    std::array<Vec3, 4> x = {p, kA, kB, kC};
+    const Four x = {p, kA, kB, kC};
     const ContactGradient g = contact_gradient(x[0], x[1], x[2], x[3], w, g2);
     ASSERT_GT(g.norm(), 0.0);
-    ContactGradient fd;
-    const double h = 1e-8;
-    for (int c = 0; c < 12; ++c) {
-      auto xp = x, xm = x;
-      xp[static_cast<size_t>(c / 3)][c % 3] += h;
-      xm[static_cast<size_t>(c / 3)][c % 3] -= h;
-      fd[c] = (contact_energy(xp[0], xp[1], xp[2], xp[3], w, g2) -
-               contact_energy(xm[0], xm[1], xm[2], xm[3], w, g2)) /
-              (2.0 * h);
-    }
+    const ContactGradient fd =
+        differences<1>(x, 1e-8, [&](const Four& y) {
+          return Eigen::Matrix<double, 1, 1>(contact_energy(y[0], y[1], y[2], y[3], w, g2));
+        }).transpose();
     EXPECT_LT((g - fd).cwiseAbs().maxCoeff() / g.cwiseAbs().maxCoeff(), 1e-6) << p.transpose();
   }
 }
@@ -89,18 +110,10 @@ TEST(SelfContactKernel, GradientMatchesDifferencesOfTheEnergy) {
 TEST(SelfContactKernel, HessianMatchesDifferencesOfTheGradient) {
   const double w = 1e9, g2 = 1e-6;
   for (const Vec3& p : points_in_every_region()) {
-    std::array<Vec3, 4> x = {p, kA, kB, kC};
+    const Four x = {p, kA, kB, kC};
     const ContactHessian hx = contact_hessian(x[0], x[1], x[2], x[3], w, g2, false);
-    ContactHessian fd;
-    const double h = 1e-9;
-    for (int c = 0; c < 12; ++c) {
-      auto xp = x, xm = x;
-      xp[static_cast<size_t>(c / 3)][c % 3] += h;
-      xm[static_cast<size_t>(c / 3)][c % 3] -= h;
-      fd.col(c) = (contact_gradient(xp[0], xp[1], xp[2], xp[3], w, g2) -
-                   contact_gradient(xm[0], xm[1], xm[2], xm[3], w, g2)) /
-                  (2.0 * h);
-    }
+    const ContactHessian fd = differences<12>(
+        x, 1e-9, [&](const Four& y) { return contact_gradient(y[0], y[1], y[2], y[3], w, g2); });
     EXPECT_LT((hx - fd).cwiseAbs().maxCoeff() / fd.cwiseAbs().maxCoeff(), 1e-6) << p.transpose();
     const ContactHessian projected = contact_hessian(x[0], x[1], x[2], x[3], w, g2, true);
     EXPECT_GE(Eigen::SelfAdjointEigenSolver<ContactHessian>(projected).eigenvalues().minCoeff(),
@@ -172,7 +185,7 @@ TEST(SelfContact, GathersNearPairsAndExcludesNeighboursOnTheNaturalSheet) {
   EXPECT_FALSE(c.refresh(x));
   EXPECT_EQ(c.size(), 0);
   EXPECT_THROW(c.cover({}, x, 0.0, 1000.0, 3e-3), std::invalid_argument);
-  EXPECT_THROW(c.cover({}, x, 1e-3, 1000.0, 0.5e-3), std::invalid_argument);
+  EXPECT_THROW(c.cover({}, x, 1e-3, 1000.0, 1.5e-3), std::invalid_argument);  // < 2 gaps
 }
 
 // The step limit: a triangle moving onto another by 3 gaps stops 1 gap away when the pair is

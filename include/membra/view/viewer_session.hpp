@@ -63,7 +63,8 @@ class ViewerSession {
   explicit ViewerSession(Scene scene);
 
   const Scene& scene() const { return scene_; }
-  // "" or why the scene's grid may be too coarse for its pattern (grid_resolution.hpp).
+  // "" or what to know before trusting the live form: the scene's grid may be too coarse for its
+  // pattern (grid_resolution.hpp), self-contact is not applied to the live relaxation.
   const std::string& grid_warning() const { return grid_warning_; }
   const Membrane& membrane() const { return prepared_.membrane; }
   Stage stage() const { return stage_; }

@@ -78,8 +78,8 @@ void SelfContact::cover(const std::vector<Triangle>& triangles, const Points& re
     throw std::invalid_argument("the contact gap must be positive");
   if (!(k > 0.0) || !std::isfinite(k))
     throw std::invalid_argument("the contact pressure must be positive");
-  if (!(excl >= g) || !std::isfinite(excl))
-    throw std::invalid_argument("the contact exclusion must be at least the gap");
+  if (!(excl >= 2.0 * g) || !std::isfinite(excl))
+    throw std::invalid_argument("the contact exclusion must be at least twice the gap");
   triangle = triangles;
   rest = rest_positions;
   gap = g;
@@ -143,12 +143,18 @@ double SelfContact::step_limit(const Points& x, const Points& d, const Points& e
   const bool curved = e.cols() == d.cols();
   Eigen::VectorXd reach = d.colwise().norm().transpose();
   if (curved) reach += e.colwise().norm().transpose();
+  // A step that would carry a particle further than kMaxReach gaps is first shortened to that:
+  // the broad phase's boxes stay bounded (a soft mode's step can be metres long).
+  const double longest = reach.size() ? reach.maxCoeff() : 0.0;
+  if (!std::isfinite(longest)) return 1.0;  // the line search rejects a step that is not finite
+  const double alpha0 = longest > kMaxReach * gap ? kMaxReach * gap / longest : 1.0;
+  reach *= alpha0;
   std::vector<Eigen::AlignedBox3d> boxes;
   boxes.reserve(triangle.size());
   for (const Triangle& t : triangle)
     boxes.push_back(triangle_box(x, t, gap + std::max({reach[t[0]], reach[t[1]], reach[t[2]]})));
   const BoxGrid grid(boxes, cell_size(boxes, gap));
-  double alpha = 1.0;
+  double alpha = alpha0;
   std::vector<int> seen(triangle.size(), -1);
   for (int p = 0; p < static_cast<int>(area.size()); ++p) {
     if (area[static_cast<size_t>(p)] <= 0.0) continue;
@@ -164,6 +170,9 @@ double SelfContact::step_limit(const Points& x, const Points& d, const Points& e
         rel = std::max(rel, (d.col(p) - d.col(t[c])).norm() +
                                 (curved ? (e.col(p) - e.col(t[c])).norm() : 0.0));
       if (!(rel > 0.0)) return;
+      // The triangle's box (unpadded) is no farther than the triangle: a cheap first test.
+      const double box = std::sqrt(triangle_box(x, t, 0.0).squaredExteriorDistance(xp));
+      if (box - rel * alpha >= gap) return;
       const double d0 = std::sqrt(distance2(x, p, t));
       if (d0 - rel * alpha >= gap) return;  // cannot reach the gap within the step so far
       if (distance2(rest, p, t) < exclusion * exclusion) return;

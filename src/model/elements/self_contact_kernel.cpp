@@ -63,10 +63,35 @@ T feature_d2(NearestFeature f, const std::array<V3<T>, 4>& x) {
   return to_point(a);
 }
 
+// The nearest feature of a triangle of no area (corners in a line or together): the nearest of
+// its corners and of its edges of some length whose nearest point lies inside them.
+NearestFeature nearest_of_collapsed(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const std::array<Vec3, 3> v = {a, b, c};
+  const std::array<NearestFeature, 3> corner = {NearestFeature::vertex_a, NearestFeature::vertex_b,
+                                                NearestFeature::vertex_c};
+  const std::array<NearestFeature, 3> edge = {NearestFeature::edge_ab, NearestFeature::edge_bc,
+                                              NearestFeature::edge_ca};
+  NearestFeature best = NearestFeature::vertex_a;
+  double d = INFINITY;
+  for (size_t k = 0; k < 3; ++k) {
+    if (const double dk = (p - v[k]).squaredNorm(); dk < d) d = dk, best = corner[k];
+    const Vec3 e = v[(k + 1) % 3] - v[k];
+    const double len2 = e.squaredNorm();
+    if (!(len2 > 0.0)) continue;
+    const double t = (p - v[k]).dot(e) / len2;
+    if (!(t > 0.0 && t < 1.0)) continue;
+    if (const double de = (p - v[k] - t * e).squaredNorm(); de < d) d = de, best = edge[k];
+  }
+  return best;
+}
+
 // The nearest feature by the regions of the triangle's plane (Ericson, Real-Time Collision
-// Detection, 5.1.5); a triangle of no area is measured by its edges and corners only.
+// Detection, 5.1.5); a triangle of no area by its edges and corners only.
 NearestFeature nearest_feature(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  if (!(ab.cross(ac).squaredNorm() > 1e-24 * ab.squaredNorm() * ac.squaredNorm()) ||
+      !(ab.squaredNorm() > 0.0) || !(ac.squaredNorm() > 0.0))
+    return nearest_of_collapsed(p, a, b, c);
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0.0 && d2 <= 0.0) return NearestFeature::vertex_a;
   const Vec3 bp = p - b;
@@ -81,20 +106,6 @@ NearestFeature nearest_feature(const Vec3& p, const Vec3& a, const Vec3& b, cons
   if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return NearestFeature::edge_ca;
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return NearestFeature::edge_bc;
-  if (!(ab.cross(ac).squaredNorm() > 1e-24 * ab.squaredNorm() * ac.squaredNorm())) {
-    // No area: the nearest of the three edges.
-    NearestFeature best = NearestFeature::edge_ab;
-    double d = INFINITY;
-    for (NearestFeature e :
-         {NearestFeature::edge_ab, NearestFeature::edge_bc, NearestFeature::edge_ca}) {
-      const double de = feature_d2<double>(e, {{{p.x(), p.y(), p.z()},
-                                                {a.x(), a.y(), a.z()},
-                                                {b.x(), b.y(), b.z()},
-                                                {c.x(), c.y(), c.z()}}});
-      if (de < d) d = de, best = e;
-    }
-    return best;
-  }
   return NearestFeature::face;
 }
 

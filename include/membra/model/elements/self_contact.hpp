@@ -36,6 +36,8 @@ struct SelfContact : NoResinRule {
   static constexpr EnergyKind kEnergy = EnergyKind::contact;
   static constexpr double kDefaultGap = 1e-3;         // m
   static constexpr double kDefaultPressure = 1000.0;  // Pa
+  // The longest step (in gaps) step_limit lets a particle take: bounds its broad phase.
+  static constexpr double kMaxReach = 100.0;
 
   // The sheet's surface: triangles (particle ids), each particle's share of the natural area
   // (m^2) and the natural positions (m), and the barrier's gap (m), pressure scale (Pa) and
@@ -48,7 +50,7 @@ struct SelfContact : NoResinRule {
   double exclusion = 3.0 * kDefaultGap;
 
   // Covers the surface `triangles` of a sheet with natural positions `rest` (3 x N, m), with the
-  // given gap (m, > 0), pressure scale (Pa, > 0) and exclusion (m, >= gap): replaces what was
+  // given gap (m, > 0), pressure scale (Pa, > 0) and exclusion (m, >= 2 gap): replaces what was
   // there and empties the pair list. Throws std::invalid_argument for values out of range.
   void cover(const std::vector<Triangle>& triangles, const Points& rest, double gap,
              double pressure, double exclusion);
@@ -58,12 +60,14 @@ struct SelfContact : NoResinRule {
   bool enabled() const { return !triangle.empty(); }
 
   // Gathers the pairs again when a pair nearer than 1.5 gaps at x is not in the list; true when
-  // the list changed (a solver's Hessian pattern then changes with it).
+  // the list changed (a solver's Hessian pattern then changes with it). Writes the cache: not
+  // to be called from two threads on one set (each solve works on its own model).
   bool refresh(const Points& x) const;
-  // The largest share alpha in (0, 1] of a step that moves particle p by at most
+  // The largest share alpha in [0, 1] of a step that moves particle p by at most
   // alpha |d_p - d_q| + alpha^2 |e_p - e_q| relative to any particle q (d: the step, e: its
   // curvature, or empty) such that no pair of the list comes nearer than a tenth of its distance
-  // at x and no other pair comes within the gap (with the list refreshed at x).
+  // at x and no other pair comes within the gap (with the list refreshed at x); never more
+  // than kMaxReach gaps of motion for any particle.
   double step_limit(const Points& x, const Points& d, const Points& e) const;
   ContactReading read(const Points& x) const;
   // The pairs another copy of this sheet gathered (a solve on a copy of the model).
