@@ -105,6 +105,19 @@ TEST(ViewerSession, TheContinuumsPatternColourShowsItsResinTriangles) {
   EXPECT_GT(resin, 10);
 }
 
+// The live relaxation (FIRE) does not hold self-contact: the viewer says so, and the session it
+// saves leaves it off, as the path it took had none (docs/viewer.md, "Limits").
+TEST(ViewerSession, SaysItsLiveRelaxationHasNoSelfContactAndSavesWithoutIt) {
+  Scene scene = small_scene();
+  scene.model = SheetModel::continuum;
+  scene.simulation.solver = Solver::newton;
+  scene.simulation.self_contact.on = true;
+  const ViewerSession s(scene);
+  EXPECT_NE(s.grid_warning().find("self-contact"), std::string::npos);
+  EXPECT_FALSE(s.to_scene().simulation.self_contact.on);
+  EXPECT_FALSE(write_scene(s.to_scene())["simulation"].contains("self_contact"));
+}
+
 TEST(ViewerSession, UndoAndRedoRestoreTheMembraneExactly) {
   ViewerSession s(small_scene());
   ASSERT_EQ(s.stretch(), "");
