@@ -3,14 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
+#include <utility>
+
+#include "membra/geometry/box_grid.hpp"
 
 namespace membra {
 namespace {
-
-struct Box {
-  Vec3 lo, hi;
-};
 
 // Whether the open segment p-q passes through the triangle a, b, c (Moller-Trumbore); a segment
 // in the triangle's plane does not count.
@@ -45,67 +43,6 @@ bool share_a_vertex(const Triangle& s, const Triangle& t) {
   return false;
 }
 
-// A cell's key: its three indices, 21 bits each.
-uint64_t cell_key(const Eigen::Array3i& c) {
-  return static_cast<uint64_t>(c.x()) << 42 | static_cast<uint64_t>(c.y()) << 21 |
-         static_cast<uint64_t>(c.z());
-}
-
-// The triangles' boxes on a uniform grid of cells about twice a mean triangle across (and at
-// most 2^21 along an axis): `entries` holds (cell, triangle) for every cell a box meets, sorted.
-struct CellGrid {
-  std::vector<Box> box;
-  Vec3 lo = Vec3::Zero();
-  double cell = 1.0;
-  std::vector<std::pair<uint64_t, int>> entries;
-
-  Eigen::Array3i index(const Vec3& p) const {
-    return ((p - lo) / cell).array().floor().cast<int>().eval();
-  }
-
-  CellGrid(const Points& x, const std::vector<Triangle>& tris) : box(tris.size()) {
-    lo = x.col(tris[0][0]);
-    Vec3 hi = lo;
-    double extent = 0.0;
-    for (size_t t = 0; t < tris.size(); ++t) {
-      const Vec3 a = x.col(tris[t][0]), b = x.col(tris[t][1]), c = x.col(tris[t][2]);
-      box[t] = {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
-      lo = lo.cwiseMin(box[t].lo), hi = hi.cwiseMax(box[t].hi);
-      extent += (box[t].hi - box[t].lo).maxCoeff();
-    }
-    // At most 2e6 cells along an axis, so that an index fits the key's 21 bits.
-    cell = std::max(
-        {2.0 * extent / static_cast<double>(tris.size()), (hi - lo).maxCoeff() / 2.0e6, 1e-12});
-    // A few huge triangles (a sheet torn into long slivers) could span millions of cells each:
-    // coarser cells until every box's cells add up to a few per triangle.
-    while (cells_needed() > 16 * tris.size() + 1'000'000) cell *= 2.0;
-    for (size_t t = 0; t < tris.size(); ++t) {
-      const Eigen::Array3i c0 = index(box[t].lo), c1 = index(box[t].hi);
-      for (int i = c0.x(); i <= c1.x(); ++i)
-        for (int j = c0.y(); j <= c1.y(); ++j)
-          for (int k = c0.z(); k <= c1.z(); ++k)
-            entries.emplace_back(cell_key({i, j, k}), static_cast<int>(t));
-    }
-    std::sort(entries.begin(), entries.end());
-  }
-
-  size_t cells_needed() const {
-    double sum = 0.0;
-    for (const Box& b : box) sum += ((index(b.hi) - index(b.lo)).cast<double>() + 1.0).prod();
-    return static_cast<size_t>(std::min(sum, 1e18));
-  }
-
-  // Whether the boxes of s and t meet and the cell `key` is where their pair is tested: the one
-  // holding the low corner of their overlap, so that each pair is tested once.
-  bool tested_here(int s, int t, uint64_t key) const {
-    const Box& bs = box[static_cast<size_t>(s)];
-    const Box& bt = box[static_cast<size_t>(t)];
-    if ((bs.lo.array() > bt.hi.array()).any() || (bt.lo.array() > bs.hi.array()).any())
-      return false;
-    return cell_key(index(bs.lo.cwiseMax(bt.lo))) == key;
-  }
-};
-
 bool pair_crosses(const Points& x, const Triangle& s, const Triangle& t) {
   if (share_a_vertex(s, t)) return false;
   return triangles_cross({x.col(s[0]), x.col(s[1]), x.col(s[2])},
@@ -134,23 +71,21 @@ Vec3 nearest_to_mean(const Points& x, const std::vector<Triangle>& tris,
 SelfIntersection self_intersections(const Points& x, const std::vector<Triangle>& tris) {
   SelfIntersection out;
   if (tris.size() < 2 || !x.allFinite()) return out;
-  const CellGrid grid(x, tris);
-  const auto& entries = grid.entries;
-  std::vector<int> crossing;
-  for (size_t first = 0; first < entries.size();) {
-    size_t end = first;
-    while (end < entries.size() && entries[end].first == entries[first].first) ++end;
-    for (size_t m = first; m < end; ++m)
-      for (size_t n = m + 1; n < end; ++n) {
-        const int s = entries[m].second, t = entries[n].second;
-        if (!grid.tested_here(s, t, entries[first].first) ||
-            !pair_crosses(x, tris[static_cast<size_t>(s)], tris[static_cast<size_t>(t)]))
-          continue;
-        ++out.pairs;
-        crossing.push_back(s), crossing.push_back(t);
-      }
-    first = end;
+  // Cells about twice a mean triangle across.
+  std::vector<Eigen::AlignedBox3d> boxes;
+  boxes.reserve(tris.size());
+  for (const Triangle& t : tris) {
+    Eigen::AlignedBox3d b(x.col(t[0]));
+    boxes.push_back(b.extend(Vec3(x.col(t[1]))).extend(Vec3(x.col(t[2]))));
   }
+  const double cell = 2.0 * BoxGrid::mean_size(boxes);
+  const BoxGrid grid(std::move(boxes), cell);
+  std::vector<int> crossing;
+  grid.overlapping_pairs([&](int s, int t) {
+    if (!pair_crosses(x, tris[static_cast<size_t>(s)], tris[static_cast<size_t>(t)])) return;
+    ++out.pairs;
+    crossing.push_back(s), crossing.push_back(t);
+  });
   std::sort(crossing.begin(), crossing.end());
   crossing.erase(std::unique(crossing.begin(), crossing.end()), crossing.end());
   out.at = nearest_to_mean(x, tris, crossing);

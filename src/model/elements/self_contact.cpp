@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <stdexcept>
 #include <utility>
 
+#include "membra/geometry/box_grid.hpp"
 #include "membra/model/sheet.hpp"
 
 namespace membra {
@@ -20,47 +20,6 @@ Vec3 corner(const Points& x, const Triangle& t, int k) {
 
 double distance2(const Points& x, int p, const Triangle& t) {
   return point_triangle_distance(x.col(p), corner(x, t, 0), corner(x, t, 1), corner(x, t, 2)).d2;
-}
-
-// A uniform grid of cubic cells over boxes, one entry per (cell, box) it overlaps, sorted by
-// cell: the broad phase of both the gathering and the step limit.
-class BoxGrid {
- public:
-  BoxGrid(const std::vector<Eigen::AlignedBox3d>& boxes, double cell) : cell_(cell) {
-    for (size_t b = 0; b < boxes.size(); ++b)
-      visit(boxes[b], [&](std::int64_t key) { entries_.emplace_back(key, static_cast<int>(b)); });
-    std::sort(entries_.begin(), entries_.end());
-  }
-  // Calls f(box) for every box sharing a cell with `query` (a box may come more than once).
-  template <typename F>
-  void overlapping(const Eigen::AlignedBox3d& query, F&& f) const {
-    visit(query, [&](std::int64_t key) {
-      auto it = std::lower_bound(entries_.begin(), entries_.end(), std::pair{key, -1});
-      for (; it != entries_.end() && it->first == key; ++it) f(it->second);
-    });
-  }
-
- private:
-  template <typename F>
-  void visit(const Eigen::AlignedBox3d& box, F&& f) const {
-    const Eigen::Array3d lo = (box.min().array() / cell_).floor(),
-                         hi = (box.max().array() / cell_).floor();
-    for (double i = lo.x(); i <= hi.x(); ++i)
-      for (double j = lo.y(); j <= hi.y(); ++j)
-        for (double k = lo.z(); k <= hi.z(); ++k)
-          f((static_cast<std::int64_t>(i) & 0x1fffff) << 42 |
-            (static_cast<std::int64_t>(j) & 0x1fffff) << 21 |
-            (static_cast<std::int64_t>(k) & 0x1fffff));
-  }
-  double cell_;
-  std::vector<std::pair<std::int64_t, int>> entries_;
-};
-
-// A cell about the size of the boxes (at least `floor`): few cells per box, few boxes per cell.
-double cell_size(const std::vector<Eigen::AlignedBox3d>& boxes, double floor) {
-  double sum = 0.0;
-  for (const auto& b : boxes) sum += b.sizes().maxCoeff();
-  return std::max(floor, boxes.empty() ? floor : sum / static_cast<double>(boxes.size()));
 }
 
 Eigen::AlignedBox3d triangle_box(const Points& x, const Triangle& t, double pad) {
@@ -110,7 +69,8 @@ std::vector<std::array<int, 4>> SelfContact::near_pairs(const Points& x, double 
   std::vector<Eigen::AlignedBox3d> boxes;
   boxes.reserve(triangle.size());
   for (const Triangle& t : triangle) boxes.push_back(triangle_box(x, t, radius));
-  const BoxGrid grid(boxes, cell_size(boxes, radius));
+  const double cell = std::max(radius, BoxGrid::mean_size(boxes));
+  const BoxGrid grid(std::move(boxes), cell);
   std::vector<std::array<int, 4>> out;
   std::vector<int> seen(triangle.size(), -1);
   for (int p = 0; p < static_cast<int>(area.size()); ++p) {
@@ -119,8 +79,7 @@ std::vector<std::array<int, 4>> SelfContact::near_pairs(const Points& x, double 
     grid.overlapping(Eigen::AlignedBox3d(xp, xp), [&](int b) {
       if (std::exchange(seen[static_cast<size_t>(b)], p) == p) return;
       const Triangle& t = triangle[static_cast<size_t>(b)];
-      if (t[0] == p || t[1] == p || t[2] == p || !boxes[static_cast<size_t>(b)].contains(xp))
-        return;
+      if (t[0] == p || t[1] == p || t[2] == p || !grid.box(b).contains(xp)) return;
       if (distance2(x, p, t) >= radius * radius) return;
       if (distance2(rest, p, t) < exclusion * exclusion) return;
       out.push_back({p, t[0], t[1], t[2]});
@@ -132,6 +91,8 @@ std::vector<std::array<int, 4>> SelfContact::near_pairs(const Points& x, double 
 
 bool SelfContact::refresh(const Points& x) const {
   if (!enabled()) return false;
+  // Two searches when the list changes, one when it does not (most calls): one search at 2 gaps
+  // for both took longer than the one at 1.5 (docs/performance.md, BM_SelfContactRefresh).
   const auto near = near_pairs(x, 1.5 * gap);
   if (std::includes(pairs_.begin(), pairs_.end(), near.begin(), near.end())) return false;
   pairs_ = near_pairs(x, 2.0 * gap);
@@ -153,7 +114,8 @@ double SelfContact::step_limit(const Points& x, const Points& d, const Points& e
   boxes.reserve(triangle.size());
   for (const Triangle& t : triangle)
     boxes.push_back(triangle_box(x, t, gap + std::max({reach[t[0]], reach[t[1]], reach[t[2]]})));
-  const BoxGrid grid(boxes, cell_size(boxes, gap));
+  const double cell = std::max(gap, BoxGrid::mean_size(boxes));
+  const BoxGrid grid(std::move(boxes), cell);
   double alpha = alpha0;
   std::vector<int> seen(triangle.size(), -1);
   for (int p = 0; p < static_cast<int>(area.size()); ++p) {
@@ -163,8 +125,7 @@ double SelfContact::step_limit(const Points& x, const Points& d, const Points& e
     grid.overlapping(query, [&](int b) {
       if (std::exchange(seen[static_cast<size_t>(b)], p) == p) return;
       const Triangle& t = triangle[static_cast<size_t>(b)];
-      if (t[0] == p || t[1] == p || t[2] == p || !boxes[static_cast<size_t>(b)].intersects(query))
-        return;
+      if (t[0] == p || t[1] == p || t[2] == p || !grid.box(b).intersects(query)) return;
       double rel = 0.0;  // how far p may move relative to the triangle per unit alpha
       for (int c = 0; c < 3; ++c)
         rel = std::max(rel, (d.col(p) - d.col(t[c])).norm() +
