@@ -55,6 +55,14 @@ void ViewerWindow::Impl::panel_status(const ViewerSession& s) {
     ImGui::TextWrapped("warning: %s", s.grid_warning().c_str());
     ImGui::PopStyleColor();
   }
+  if (s.crossings().pairs > 0) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.2f, 1.0f));
+    ImGui::TextWrapped(
+        "the form passes through itself: %ld pairs of triangles cross (outlined in magenta); no "
+        "real sheet takes it there",
+        s.crossings().pairs);
+    ImGui::PopStyleColor();
+  }
 }
 
 // The protocol buttons, play/pause/step and the live mode.

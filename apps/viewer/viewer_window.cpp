@@ -211,6 +211,7 @@ void ViewerWindow::Impl::draw_scene(const ViewerSession& s, ViewSettings& v) {
   }
   draw_springs_and_particles(m, v, vp);
   draw_frame_and_cut(m, v, vp);
+  draw_crossings(s, vp);
   // Both views are orthographic: one scale in the plane of the screen (docs/viewer.md).
   painter->scale_bar(v.flat ? flat_view(s, sw, h).scale() : h / (2.0 * v.camera.half_height), sw,
                      h);
@@ -250,6 +251,21 @@ void ViewerWindow::Impl::draw_springs_and_particles(const Membrane& m, const Vie
   }
   painter->points(all, Rgb(0.1f, 0.1f, 0.1f), 3.0f, vp);
   painter->points(pinned, Rgb(0.0f, 0.0f, 0.0f), 5.0f, vp);
+}
+
+// The triangles of a settled form that pass through each other, outlined over everything (the
+// depth test is off): where the form is not one a real sheet can take.
+void ViewerWindow::Impl::draw_crossings(const ViewerSession& s, const Eigen::Matrix4f& vp) {
+  const Points& x = s.membrane().state.x;
+  const std::vector<Triangle>& tris = s.membrane().sheet.triangles;
+  std::vector<Vec3> ends;
+  for (int t : s.crossings().triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Triangle& tri = tris[static_cast<size_t>(t)];
+      ends.push_back(x.col(tri[k]));
+      ends.push_back(x.col(tri[(k + 1) % 3]));
+    }
+  if (!ends.empty()) painter->lines(ends, Rgb(0.9f, 0.0f, 0.9f), vp);
 }
 
 // The frame's outline in the 2-D view and the cut being dragged.

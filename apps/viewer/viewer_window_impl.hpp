@@ -105,6 +105,7 @@ struct ViewerWindow::Impl {
                                   const Eigen::Matrix4f& vp);
   // The frame's outline in the 2-D view and the cut being dragged.
   void draw_frame_and_cut(const Membrane& m, const ViewSettings& v, const Eigen::Matrix4f& vp);
+  void draw_crossings(const ViewerSession& s, const Eigen::Matrix4f& vp);
 };
 
 }  // namespace membra::viewer

@@ -13,14 +13,25 @@ BoxGrid::BoxGrid(std::vector<Eigen::AlignedBox3d> boxes, double cell) : boxes_(s
   if (all.isEmpty()) return;
   lo_ = all.min();
   const double span = all.sizes().maxCoeff();
+  if (!std::isfinite(span)) {
+    // Boxes farther apart than a double spans: one cell holds them all (no index to compute).
+    one_cell_ = true;
+    top_.setZero();
+    for (size_t b = 0; b < boxes_.size(); ++b)
+      if (!boxes_[b].isEmpty()) entries_.emplace_back(0, static_cast<int>(b));
+    return;
+  }
   if (!(cell > 0.0) || !std::isfinite(cell)) cell = span;
   // Indices fit a key's 21 bits per axis.
   cell_ = std::max({cell, span / 2.0e6, 1e-12});
   top_ = index(all.max());
-  while (cells_met() > 16.0 * static_cast<double>(boxes_.size()) + 1e6) {
+  double met = cells_met();
+  while (met > 16.0 * static_cast<double>(boxes_.size()) + 1e6) {
     cell_ *= 2.0;
     top_ = index(all.max());
+    met = cells_met();
   }
+  entries_.reserve(static_cast<size_t>(met));
   for (size_t b = 0; b < boxes_.size(); ++b) {
     Eigen::Array3i c0, c1;
     if (!cell_range(boxes_[b], c0, c1)) continue;
@@ -31,18 +42,23 @@ BoxGrid::BoxGrid(std::vector<Eigen::AlignedBox3d> boxes, double cell) : boxes_(s
 
 double BoxGrid::mean_size(const std::vector<Eigen::AlignedBox3d>& boxes) {
   double sum = 0.0;
+  int n = 0;
   for (const auto& b : boxes)
-    if (!b.isEmpty()) sum += b.sizes().maxCoeff();
-  return boxes.empty() ? 0.0 : sum / static_cast<double>(boxes.size());
-}
-
-Eigen::Array3i BoxGrid::index(const Vec3& p) const {
-  return ((p - lo_) / cell_).array().floor().cast<int>().eval();
+    if (!b.isEmpty() && b.min().allFinite() && b.max().allFinite()) {
+      sum += b.sizes().maxCoeff();
+      ++n;
+    }
+  return n == 0 ? 0.0 : sum / n;
 }
 
 bool BoxGrid::cell_range(const Eigen::AlignedBox3d& b, Eigen::Array3i& c0,
                          Eigen::Array3i& c1) const {
   if (b.isEmpty() || top_.x() < 0) return false;
+  if (one_cell_) {
+    if (b.min().array().isNaN().any() || b.max().array().isNaN().any()) return false;
+    c0 = c1 = Eigen::Array3i::Zero();
+    return true;
+  }
   // In doubles first: a query far outside the grid would overflow an int.
   const Eigen::Array3d f0 = ((b.min() - lo_) / cell_).array().floor(),
                        f1 = ((b.max() - lo_) / cell_).array().floor();
@@ -53,11 +69,6 @@ bool BoxGrid::cell_range(const Eigen::AlignedBox3d& b, Eigen::Array3i& c0,
   return true;
 }
 
-std::uint64_t BoxGrid::key(int i, int j, int k) {
-  return static_cast<std::uint64_t>(i) << 42 | static_cast<std::uint64_t>(j) << 21 |
-         static_cast<std::uint64_t>(k);
-}
-
 double BoxGrid::cells_met() const {
   double sum = 0.0;
   for (const auto& b : boxes_) {
@@ -65,14 +76,6 @@ double BoxGrid::cells_met() const {
     if (cell_range(b, c0, c1)) sum += ((c1 - c0).cast<double>() + 1.0).prod();
   }
   return sum;
-}
-
-bool BoxGrid::tested_here(int a, int b, std::uint64_t cell_key) const {
-  const Eigen::AlignedBox3d& ba = box(a);
-  const Eigen::AlignedBox3d& bb = box(b);
-  if (!ba.intersects(bb)) return false;
-  const Eigen::Array3i c = index(ba.min().cwiseMax(bb.min()));
-  return key(c.x(), c.y(), c.z()) == cell_key;
 }
 
 }  // namespace membra

@@ -145,6 +145,7 @@ void ViewerSession::model_changed() {
                                  relax_options(scene_, prepared_.force_scale));
   prepared_.membrane.state.v.setZero(3, prepared_.membrane.sheet.model.num_particles());
   settled_ = false;
+  crossings_ = {};
 }
 
 std::string ViewerSession::stretch() {
@@ -282,6 +283,7 @@ SliceReport ViewerSession::advance_slice(long max_iterations, double max_seconds
     }
   }
   settled_ = true;
+  crossings_ = self_intersections(m.state.x, m.sheet.triangles);
   rep.settled = queue_.empty();
   return rep;
 }

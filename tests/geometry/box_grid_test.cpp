@@ -98,20 +98,44 @@ TEST(BoxGrid, AFewHugeSliversCoarsenTheCellsAndChangeNoPair) {
 TEST(BoxGrid, BoxesThatAreNotFiniteAreInNoCell) {
   auto boxes = random_boxes(50, 1.0, 0.5, 5);
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
   boxes[7] = Eigen::AlignedBox3d(Vec3(nan, 0, 0), Vec3(nan, 1, 1));
-  boxes[9] =
-      Eigen::AlignedBox3d(Vec3(0, 0, 0), Vec3(std::numeric_limits<double>::infinity(), 1, 1));
+  boxes[9] = Eigen::AlignedBox3d(Vec3(0, 0, 0), Vec3(inf, 1, 1));
+  // The rest keep their pairs: an infinite box does not stretch the grid over everything.
+  auto finite = boxes;
+  finite[7].setEmpty();
+  finite[9].setEmpty();
+  const auto expected = brute_force_pairs(finite);
+  ASSERT_GT(expected.size(), 5u);
   const BoxGrid grid(boxes, 0.3);
-  for (const auto& [a, b] : grid_pairs(grid))
-    for (int bad : {7, 9}) {
-      EXPECT_NE(a, bad);
-      EXPECT_NE(b, bad);
-    }
+  EXPECT_EQ(grid_pairs(grid), expected);
+  EXPECT_NEAR(BoxGrid::mean_size(boxes), BoxGrid::mean_size(finite), 1e-15);
   int met = 0;
   const BoxGrid none({}, 1.0);
   none.overlapping(Eigen::AlignedBox3d(Vec3::Zero(), Vec3::Ones()), [&](int) { ++met; });
   none.overlapping_pairs([&](int, int) { ++met; });
   EXPECT_EQ(met, 0);
+}
+
+// Cells far smaller than the field would not fit a key's 21 bits per axis: they are made at
+// least 1/2 000 000 of the field, and tiny boxes at its two ends still pair as they should.
+TEST(BoxGrid, TinyCellsOverAWideFieldKeepTheirPairs) {
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (double at : {0.0, 1000.0, 2.0e-7, 1000.0 + 2.0e-7})
+    boxes.emplace_back(Vec3::Constant(at), Vec3::Constant(at + 1e-6));
+  boxes.emplace_back(Vec3(500.0, 0.0, 0.0), Vec3(500.0 + 1e-6, 1e-6, 1e-6));
+  const BoxGrid grid(boxes, 1e-9);
+  EXPECT_GE(grid.cell(), 1000.0 / 2.0e6);
+  const std::set<std::pair<int, int>> expected{{0, 2}, {1, 3}};
+  EXPECT_EQ(brute_force_pairs(boxes), expected);
+  EXPECT_EQ(grid_pairs(grid), expected);
+  // And boxes farther apart than a double spans still pair within one cell.
+  const std::vector<Eigen::AlignedBox3d> far{
+      Eigen::AlignedBox3d(Vec3::Constant(-1e308), Vec3::Constant(-0.9e308)),
+      Eigen::AlignedBox3d(Vec3::Constant(0.9e308), Vec3::Constant(1e308)),
+      Eigen::AlignedBox3d(Vec3::Constant(0.95e308), Vec3::Constant(1e308))};
+  const BoxGrid wide(far, 1.0);
+  EXPECT_EQ(grid_pairs(wide), (std::set<std::pair<int, int>>{{1, 2}}));
 }
 
 }  // namespace

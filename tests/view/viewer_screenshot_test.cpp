@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "test_util.hpp"
+#include "view/rolling_strip.hpp"
 
 namespace membra {
 namespace {
@@ -123,6 +124,31 @@ TEST(ViewerScreenshot, TheMouseToolsPaintCutAndPin) {
   ASSERT_EQ(saved["protocol"].size(), 3u) << saved.dump();
   EXPECT_EQ(saved["protocol"][1]["step"], "cut");
   EXPECT_EQ(saved["protocol"][2]["step"], "load");
+  fs::remove_all(dir);
+}
+
+// A strip coated on one face rolls past a full turn and, with no self-contact in the live
+// relaxation, settles through itself: the crossing triangles are outlined in magenta, which no
+// colour map uses, and nothing is outlined before.
+TEST(ViewerScreenshot, AFormThatPassesThroughItselfIsOutlinedInMagenta) {
+  const fs::path dir = unique_temp_dir();
+  fs::create_directories(dir);
+  {
+    std::ofstream scene(dir / "scene.json");
+    scene << kRollingStrip;
+    std::ofstream script(dir / "script.txt");
+    script << "view 3d\nscreenshot " << (dir / "flat.png").string() << "\n"
+           << "play\nsettle\nfit\nscreenshot " << (dir / "rolled.png").string() << "\nquit\n";
+  }
+  const auto [code, out] = run_viewer(dir / "scene.json", dir / "script.txt");
+  ASSERT_EQ(code, 0) << out;
+  const auto magenta = [](const std::array<int, 3>& c) {
+    return c[0] > 150 && c[2] > 150 && c[1] < 90;
+  };
+  const Png flat = load(dir / "flat.png"), rolled = load(dir / "rolled.png");
+  ASSERT_EQ(rolled.w, 1000) << "no screenshot";
+  EXPECT_EQ(count(flat, magenta), 0);
+  EXPECT_GT(count(rolled, magenta), 200);
   fs::remove_all(dir);
 }
 

@@ -12,6 +12,7 @@
 #include "membra/process/run.hpp"
 #include "membra/view/color_field.hpp"
 #include "membra/view/viewer_session.hpp"
+#include "view/rolling_strip.hpp"
 
 namespace membra {
 namespace {
@@ -116,6 +117,25 @@ TEST(ViewerSession, SaysItsLiveRelaxationHasNoSelfContactAndSavesWithoutIt) {
   EXPECT_NE(s.grid_warning().find("self-contact"), std::string::npos);
   EXPECT_FALSE(s.to_scene().simulation.self_contact.on);
   EXPECT_FALSE(write_scene(s.to_scene())["simulation"].contains("self_contact"));
+}
+
+// A strip coated on one face rolls past a full turn; the live relaxation has no self-contact, so
+// it settles through itself. The session says where, as `membra run` would, and forgets it when
+// the sheet changes (docs/viewer.md, "Limits").
+TEST(ViewerSession, ASettledFormThatPassesThroughItselfSaysWhere) {
+  ViewerSession s(parse_scene(json::parse(kRollingStrip)));
+  s.play_scene_protocol();
+  EXPECT_EQ(s.crossings().pairs, 0);  // not checked while the sheet moves
+  const SliceReport r = s.settle();
+  ASSERT_TRUE(r.settled) << r.message;
+  const SelfIntersection measured =
+      self_intersections(s.membrane().state.x, s.membrane().sheet.triangles);
+  EXPECT_GT(measured.pairs, 10);
+  EXPECT_EQ(s.crossings().pairs, measured.pairs);
+  EXPECT_EQ(s.crossings().triangles, measured.triangles);
+  s.reset();
+  EXPECT_EQ(s.crossings().pairs, 0);
+  EXPECT_TRUE(s.crossings().triangles.empty());
 }
 
 TEST(ViewerSession, UndoAndRedoRestoreTheMembraneExactly) {

@@ -19,13 +19,15 @@ class BoxGrid {
   // Cells `cell` across (callers pass about a box's size: few cells per box, few boxes per cell),
   // made coarser where needed: at most 2^21 cells along an axis, and no more cells met than 16
   // per box plus a million (a few huge boxes, a sheet torn into long slivers, would otherwise
-  // span millions each). A box with a coordinate that is not finite is in no cell.
+  // span millions each). A box with a coordinate that is not finite is in no cell; boxes farther
+  // apart than a double spans share one cell.
   BoxGrid(std::vector<Eigen::AlignedBox3d> boxes, double cell);
 
   const Eigen::AlignedBox3d& box(int b) const { return boxes_[static_cast<size_t>(b)]; }
   double cell() const { return cell_; }
 
-  // The mean of the boxes' largest sides (zero for none): the callers' usual cell size.
+  // The mean of the largest sides of the boxes that are finite and not empty (zero for none):
+  // the callers' usual cell size.
   static double mean_size(const std::vector<Eigen::AlignedBox3d>& boxes);
 
   // Calls f(b) for every box b that shares a cell with `query` (a box may come more than once,
@@ -57,10 +59,17 @@ class BoxGrid {
   }
 
  private:
-  Eigen::Array3i index(const Vec3& p) const;
+  // Inline, as is tested_here: both run for every candidate pair.
+  Eigen::Array3i index(const Vec3& p) const {
+    if (one_cell_) return Eigen::Array3i::Zero();
+    return ((p - lo_) / cell_).array().floor().cast<int>().eval();
+  }
   // The cells a box meets, clipped to the grid; false when it meets none.
   bool cell_range(const Eigen::AlignedBox3d& b, Eigen::Array3i& c0, Eigen::Array3i& c1) const;
-  static std::uint64_t key(int i, int j, int k);
+  static std::uint64_t key(int i, int j, int k) {
+    return static_cast<std::uint64_t>(i) << 42 | static_cast<std::uint64_t>(j) << 21 |
+           static_cast<std::uint64_t>(k);
+  }
   template <typename F>
   static void for_each_cell(const Eigen::Array3i& c0, const Eigen::Array3i& c1, F&& f) {
     for (int i = c0.x(); i <= c1.x(); ++i)
@@ -68,12 +77,19 @@ class BoxGrid {
         for (int k = c0.z(); k <= c1.z(); ++k) f(key(i, j, k));
   }
   double cells_met() const;
-  bool tested_here(int a, int b, std::uint64_t cell_key) const;
+  bool tested_here(int a, int b, std::uint64_t cell_key) const {
+    const Eigen::AlignedBox3d& ba = box(a);
+    const Eigen::AlignedBox3d& bb = box(b);
+    if (!ba.intersects(bb)) return false;
+    const Eigen::Array3i c = index(ba.min().cwiseMax(bb.min()));
+    return key(c.x(), c.y(), c.z()) == cell_key;
+  }
 
   std::vector<Eigen::AlignedBox3d> boxes_;
   Vec3 lo_ = Vec3::Zero();
   Eigen::Array3i top_ = Eigen::Array3i::Constant(-1);  // the highest cell index along each axis
   double cell_ = 1.0;
+  bool one_cell_ = false;
   std::vector<std::pair<std::uint64_t, int>> entries_;  // (cell, box), sorted
 };
 

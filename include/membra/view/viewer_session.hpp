@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "membra/io/scene.hpp"
+#include "membra/measure/self_intersection.hpp"
 #include "membra/model/membrane.hpp"
 #include "membra/process/increment_walk.hpp"
 #include "membra/process/path.hpp"
@@ -116,6 +117,10 @@ class ViewerSession {
   // Advances until settled or `max_iterations` in all have been spent.
   SliceReport settle(long max_iterations = 2'000'000);
   bool settled() const { return settled_; }
+  // Where the settled form passes through itself (measure/self_intersection.hpp), as `membra run`
+  // reports it: checked each time the sheet settles, none while it moves. The live relaxation
+  // has no self-contact, so a form that rolls or folds onto itself can settle through itself.
+  const SelfIntersection& crossings() const { return crossings_; }
   // What the last advance() did.
   const SliceReport& last_slice() const { return last_slice_; }
 
@@ -169,6 +174,7 @@ class ViewerSession {
   // increment by increment as `membra run` follows it.
   IncrementWalk walk_;
   bool settled_ = false;
+  SelfIntersection crossings_;
   SliceReport last_slice_;
   bool editing_ = false;  // between begin_edit() and end_edit(): one snapshot in all
   bool edit_snapshot_taken_ = false;
