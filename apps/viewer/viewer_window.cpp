@@ -36,7 +36,7 @@ std::string overall_size(const Points& x) {
 }
 
 const std::array<Rgb, 4> kFamilyColors = {Rgb(0.15f, 0.15f, 0.15f), Rgb(0.45f, 0.45f, 0.7f),
-                                          Rgb(0.6f, 0.4f, 0.2f), Rgb(0.8f, 0.1f, 0.6f)};
+                                          Rgb(0.6f, 0.4f, 0.2f), Rgb(0.0f, 0.5f, 0.5f)};
 
 }  // namespace
 
@@ -254,7 +254,8 @@ void ViewerWindow::Impl::draw_springs_and_particles(const Membrane& m, const Vie
 }
 
 // The triangles of a settled form that pass through each other, outlined over everything (the
-// depth test is off): where the form is not one a real sheet can take.
+// depth test is off) in magenta, which nothing else in the view uses (the colour maps, the
+// springs' families, the frame): where the form is not one a real sheet can take.
 void ViewerWindow::Impl::draw_crossings(const ViewerSession& s, const Eigen::Matrix4f& vp) {
   const Points& x = s.membrane().state.x;
   const std::vector<Triangle>& tris = s.membrane().sheet.triangles;
@@ -265,7 +266,7 @@ void ViewerWindow::Impl::draw_crossings(const ViewerSession& s, const Eigen::Mat
       ends.push_back(x.col(tri[k]));
       ends.push_back(x.col(tri[(k + 1) % 3]));
     }
-  if (!ends.empty()) painter->lines(ends, Rgb(0.9f, 0.0f, 0.9f), vp);
+  if (!ends.empty()) painter->lines(ends, Rgb(1.0f, 0.0f, 1.0f), vp);
 }
 
 // The frame's outline in the 2-D view and the cut being dragged.

@@ -16,6 +16,7 @@ BoxGrid::BoxGrid(std::vector<Eigen::AlignedBox3d> boxes, double cell) : boxes_(s
   if (!std::isfinite(span)) {
     // Boxes farther apart than a double spans: one cell holds them all (no index to compute).
     one_cell_ = true;
+    cell_ = span;  // infinite: one cell
     top_.setZero();
     for (size_t b = 0; b < boxes_.size(); ++b)
       if (!boxes_[b].isEmpty()) entries_.emplace_back(0, static_cast<int>(b));

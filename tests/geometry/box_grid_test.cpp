@@ -109,7 +109,10 @@ TEST(BoxGrid, BoxesThatAreNotFiniteAreInNoCell) {
   ASSERT_GT(expected.size(), 5u);
   const BoxGrid grid(boxes, 0.3);
   EXPECT_EQ(grid_pairs(grid), expected);
-  EXPECT_NEAR(BoxGrid::mean_size(boxes), BoxGrid::mean_size(finite), 1e-15);
+  const Eigen::AlignedBox3d empty;
+  EXPECT_EQ(BoxGrid::mean_size({Eigen::AlignedBox3d(Vec3::Zero(), Vec3(2, 1, 1)), empty, boxes[9],
+                                boxes[7], Eigen::AlignedBox3d(Vec3::Zero(), Vec3(1, 4, 1))}),
+            3.0);
   int met = 0;
   const BoxGrid none({}, 1.0);
   none.overlapping(Eigen::AlignedBox3d(Vec3::Zero(), Vec3::Ones()), [&](int) { ++met; });
@@ -136,6 +139,14 @@ TEST(BoxGrid, TinyCellsOverAWideFieldKeepTheirPairs) {
       Eigen::AlignedBox3d(Vec3::Constant(0.95e308), Vec3::Constant(1e308))};
   const BoxGrid wide(far, 1.0);
   EXPECT_EQ(grid_pairs(wide), (std::set<std::pair<int, int>>{{1, 2}}));
+  std::set<int> met;
+  wide.overlapping(Eigen::AlignedBox3d(Vec3::Constant(0.96e308), Vec3::Constant(0.97e308)),
+                   [&](int b) { met.insert(b); });
+  EXPECT_EQ(met, (std::set<int>{0, 1, 2}));  // one cell: every box is a candidate
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  wide.overlapping(Eigen::AlignedBox3d(Vec3::Constant(nan), Vec3::Constant(nan)),
+                   [&](int b) { met.insert(b + 10); });
+  EXPECT_EQ(met.size(), 3u);
 }
 
 }  // namespace

@@ -143,7 +143,7 @@ TEST(ViewerScreenshot, AFormThatPassesThroughItselfIsOutlinedInMagenta) {
   const auto [code, out] = run_viewer(dir / "scene.json", dir / "script.txt");
   ASSERT_EQ(code, 0) << out;
   const auto magenta = [](const std::array<int, 3>& c) {
-    return c[0] > 150 && c[2] > 150 && c[1] < 90;
+    return c[0] > 200 && c[2] > 200 && c[1] < 60;
   };
   const Png flat = load(dir / "flat.png"), rolled = load(dir / "rolled.png");
   ASSERT_EQ(rolled.w, 1000) << "no screenshot";

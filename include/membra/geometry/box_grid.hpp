@@ -26,8 +26,9 @@ class BoxGrid {
   const Eigen::AlignedBox3d& box(int b) const { return boxes_[static_cast<size_t>(b)]; }
   double cell() const { return cell_; }
 
-  // The mean of the largest sides of the boxes that are finite and not empty (zero for none):
-  // the callers' usual cell size.
+  // The mean of the largest sides of the boxes that are finite and not empty (zero for none;
+  // infinite if a side overflows, which the constructor treats as no size given): the callers'
+  // usual cell size.
   static double mean_size(const std::vector<Eigen::AlignedBox3d>& boxes);
 
   // Calls f(b) for every box b that shares a cell with `query` (a box may come more than once,
