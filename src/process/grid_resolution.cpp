@@ -16,12 +16,13 @@ constexpr int kLargestResolution = 4096;  // the schema's bound on sheet.resolut
 std::string coarse_message(const CoarseGrid& c) {
   char text[512];
   const bool reachable = std::max(c.resolution[0], c.resolution[1]) <= kLargestResolution;
+  // Rounded down: a feature just narrower than two spacings must not read "2 grid spacings".
+  const double across = std::floor(c.width / c.spacing * 100.0) / 100.0;
   std::snprintf(text, sizeof text,
                 "sheet.resolution: the narrowest resin piece or latex gap, %.3g mm across at "
-                "(%.4g, %.4g) mm on the natural sheet, is %.2g grid spacings (%.3g mm) across; "
+                "(%.4g, %.4g) mm on the natural sheet, is %.3g grid spacings (%.3g mm) across; "
                 "the lattice draws it as a staircase and the form may change with the grid",
-                c.width * 1e3, c.at.x() * 1e3, c.at.y() * 1e3, c.width / c.spacing,
-                c.spacing * 1e3);
+                c.width * 1e3, c.at.x() * 1e3, c.at.y() * 1e3, across, c.spacing * 1e3);
   std::string out = text;
   if (reachable)
     out += "; sheet.resolution [" + std::to_string(c.resolution[0]) + ", " +

@@ -31,6 +31,21 @@ TEST(GridResolution, Exp3At21WarnsAndNamesAResolutionThatResolvesIt) {
       coarse_grid(load_scene(kGridExamples + "exp3_parallel.json", {"sheet.resolution=[35,35]"})));
 }
 
+// A strip coated all over, 10 mm wide on a 5 mm grid: the narrowest feature is the sheet itself,
+// a hair under two spacings as the outline is sampled; the message must not call it 2 spacings
+// while it asks for 2.
+TEST(GridResolution, AFeatureJustUnderTwoSpacingsDoesNotReadAsTwo) {
+  const auto coarse = coarse_grid(parse_scene(nlohmann::json::parse(R"({
+    "name": "strip", "sheet": {"size": [110, 10], "resolution": [23, 3]},
+    "protocol": [{"step": "stretch", "lambda": [1.5, 1.0]},
+      {"step": "impregnate", "bilayer": true, "pattern": {"polygon": {"points":
+        [[-10, -10], [310, -10], [310, 210], [-10, 210]]}}}]})")));
+  ASSERT_TRUE(coarse.has_value());
+  EXPECT_LT(coarse->width, 2.0 * coarse->spacing);
+  EXPECT_EQ(coarse->message.find(" 2 grid spacings"), std::string::npos) << coarse->message;
+  EXPECT_NE(coarse->message.find("1.99 grid spacings"), std::string::npos) << coarse->message;
+}
+
 TEST(GridResolution, ResolvedPatternlessAndContinuumScenesSayNothing) {
   EXPECT_FALSE(coarse_grid(load_scene(kGridExamples + "exp3_parallel.json")));
   EXPECT_FALSE(coarse_grid(load_scene(kGridExamples + "exp1_basic.json")));
