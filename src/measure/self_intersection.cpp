@@ -74,10 +74,7 @@ SelfIntersection self_intersections(const Points& x, const std::vector<Triangle>
   // Cells about twice a mean triangle across.
   std::vector<Eigen::AlignedBox3d> boxes;
   boxes.reserve(tris.size());
-  for (const Triangle& t : tris) {
-    Eigen::AlignedBox3d b(x.col(t[0]));
-    boxes.push_back(b.extend(Vec3(x.col(t[1]))).extend(Vec3(x.col(t[2]))));
-  }
+  for (const Triangle& t : tris) boxes.push_back(triangle_box(x, t));
   const double cell = 2.0 * BoxGrid::mean_size(boxes);
   const BoxGrid grid(std::move(boxes), cell);
   std::vector<int> crossing;

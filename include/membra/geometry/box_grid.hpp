@@ -11,8 +11,18 @@
 #include <Eigen/Geometry>
 
 #include "membra/core/vec.hpp"
+#include "membra/geometry/triangulation.hpp"
 
 namespace membra {
+
+// The box of triangle t at positions x (3 x N), grown by `pad` on every side: what both users of
+// the grid list.
+inline Eigen::AlignedBox3d triangle_box(const Points& x, const Triangle& t, double pad = 0.0) {
+  Eigen::AlignedBox3d b(x.col(t[0]));
+  b.extend(Vec3(x.col(t[1])));
+  b.extend(Vec3(x.col(t[2])));
+  return Eigen::AlignedBox3d(b.min().array() - pad, b.max().array() + pad);
+}
 
 class BoxGrid {
  public:

@@ -22,13 +22,6 @@ double distance2(const Points& x, int p, const Triangle& t) {
   return point_triangle_distance(x.col(p), corner(x, t, 0), corner(x, t, 1), corner(x, t, 2)).d2;
 }
 
-Eigen::AlignedBox3d triangle_box(const Points& x, const Triangle& t, double pad) {
-  Eigen::AlignedBox3d b(x.col(t[0]));
-  b.extend(Vec3(x.col(t[1])));
-  b.extend(Vec3(x.col(t[2])));
-  return Eigen::AlignedBox3d(b.min().array() - pad, b.max().array() + pad);
-}
-
 }  // namespace
 
 void SelfContact::cover(const std::vector<Triangle>& triangles, const Points& rest_positions,
