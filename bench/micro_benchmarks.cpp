@@ -10,6 +10,7 @@
 #include <omp.h>
 #include <Eigen/CholmodSupport>
 
+#include "membra/measure/colormap.hpp"
 #include "membra/measure/curvature.hpp"
 #include "membra/measure/fitted_curvature.hpp"
 #include "membra/measure/self_intersection.hpp"
@@ -18,6 +19,7 @@
 #include "membra/model/continuum_sheet.hpp"
 #include "membra/model/forces.hpp"
 #include "membra/model/sheet.hpp"
+#include "membra/render/renderer.hpp"
 #include "membra/solve/hessian_assembler.hpp"
 #include "membra/solve/newton_workspace.hpp"
 
@@ -280,6 +282,26 @@ void BM_StressTensor(benchmark::State& state) {
   set_per_item(state, s.model.num_particles());  // ns per particle
 }
 BENCHMARK(BM_StressTensor)->Arg(64)->Unit(benchmark::kMicrosecond);
+
+// One picture of a run (curvature.png's default 1200 x 900) of a 64 x 64 sheet bowed into a
+// dome, with and without its soft shadow (Arg 1/0): what each of a run's pictures costs.
+void BM_RenderPicture(benchmark::State& state) {
+  const auto s = membra::build_sheet({0.2, 0.2, 64, 64}, membra::SheetOptions{});
+  Points x = s.model.reference;
+  std::vector<membra::Rgb> colors;
+  for (int p = 0; p < x.cols(); ++p) {
+    const double u = x(0, p) - 0.1, v = x(1, p) - 0.1;
+    x(2, p) = -2.0 * (u * u + v * v);
+    colors.push_back(membra::colormap(u, -0.1, 0.1, membra::ColourMap::paper));
+  }
+  membra::Renderer renderer(1200, 900);
+  const membra::Camera camera{-60.0, 35.0, 1.1, state.range(0) == 1};
+  for (auto _ : state) {
+    const membra::Image img = renderer.render(x, s.triangles, colors, camera, nullptr, "Dome");
+    benchmark::DoNotOptimize(img.rgb.data());
+  }
+}
+BENCHMARK(BM_RenderPicture)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

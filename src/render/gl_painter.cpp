@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <tuple>
+#include <vector>
 
 #include "membra/core/readable_units.hpp"
 #include "membra/render/font.hpp"
@@ -65,6 +67,40 @@ out vec4 out_color;
 void main() { out_color = vec4(ink, texture(coverage, tex).r); }
 )";
 
+// The soft shadow's passes over the whole viewport: a triangle that covers it, from the vertex id.
+const char* kScreenVertexShader = R"(#version 330 core
+out vec2 uv;
+void main() {
+  uv = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(2.0 * uv - 1.0, 0.0, 1.0);
+}
+)";
+
+// The silhouette's coverage averaged over the penumbra's disk: the share of the 40 shifted
+// copies of the old drawing (one per tap) that cover this pixel.
+const char* kBlurFragmentShader = R"(#version 330 core
+in vec2 uv;
+uniform sampler2D mask;
+uniform vec2 taps[40];
+out vec4 out_color;
+void main() {
+  float sum = 0.0;
+  for (int k = 0; k < 40; ++k) sum += texture(mask, uv - taps[k]).r;
+  out_color = vec4(sum / 40.0, 0.0, 0.0, 1.0);
+}
+)";
+
+// Grey laid over the ground as 40 faint copies would (each 1.2 % opaque where it covers).
+const char* kShadowFragmentShader = R"(#version 330 core
+in vec2 uv;
+uniform sampler2D coverage;
+out vec4 out_color;
+void main() {
+  float n = 40.0 * texture(coverage, uv).r;
+  out_color = vec4(0.25, 0.27, 0.3, 1.0 - pow(0.988, n));
+}
+)";
+
 GLuint compile(GLenum type, const char* src);
 
 GLuint link(const char* vertex, const char* fragment) {
@@ -120,7 +156,42 @@ Eigen::Matrix4f pixel_matrix(int width, int height) {
 struct GlPainter::Impl {
   GLuint program = 0, vao = 0, vbo = 0;
   GLuint text_program = 0, text_vao = 0, text_vbo = 0, texture = 0;
+  // The shadow's silhouette and its blur, drawn off screen at a lower resolution.
+  GLuint blur_program = 0, shadow_program = 0;
+  GLuint mask_fbo = 0, mask_tex = 0, blur_fbo = 0, blur_tex = 0;
+  int mask_w = 0, mask_h = 0;
   float alpha = 1.0f;
+
+  // The two off-screen targets at w x h (kept while the size stays).
+  void shadow_targets(int w, int h) {
+    if (w == mask_w && h == mask_h) return;
+    const float border[] = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (auto [fbo, tex, format] :
+         {std::tuple{mask_fbo, mask_tex, GL_R8}, std::tuple{blur_fbo, blur_tex, GL_R16F}}) {
+      glBindTexture(GL_TEXTURE_2D, tex);
+      glTexImage2D(GL_TEXTURE_2D, 0, format, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+      glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw RenderError("incomplete shadow framebuffer");
+    }
+    mask_w = w;
+    mask_h = h;
+  }
+  // A pass of `prog` over the whole of the current target, reading `tex` on unit 0.
+  void screen_pass(GLuint prog, GLuint tex, const char* sampler) {
+    glUseProgram(prog);
+    glBindVertexArray(text_vao);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glUniform1i(glGetUniformLocation(prog, sampler), 0);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
 
   void draw(const std::vector<Vertex>& v, GLenum mode, const float* vp, const float* rot, int lit) {
     if (v.empty()) return;
@@ -150,6 +221,12 @@ GlPainter::GlPainter() : impl_(std::make_unique<Impl>()) {
   Impl& r = *impl_;
   r.program = link(kVertexShader, kFragmentShader);
   r.text_program = link(kTextVertexShader, kTextFragmentShader);
+  r.blur_program = link(kScreenVertexShader, kBlurFragmentShader);
+  r.shadow_program = link(kScreenVertexShader, kShadowFragmentShader);
+  glGenFramebuffers(1, &r.mask_fbo);
+  glGenFramebuffers(1, &r.blur_fbo);
+  glGenTextures(1, &r.mask_tex);
+  glGenTextures(1, &r.blur_tex);
   glGenVertexArrays(1, &r.vao);
   glGenBuffers(1, &r.vbo);
   glGenVertexArrays(1, &r.text_vao);
@@ -167,6 +244,12 @@ GlPainter::~GlPainter() {
   glDeleteVertexArrays(1, &impl_->text_vao);
   glDeleteTextures(1, &impl_->texture);
   glDeleteProgram(impl_->text_program);
+  glDeleteProgram(impl_->blur_program);
+  glDeleteProgram(impl_->shadow_program);
+  glDeleteFramebuffers(1, &impl_->mask_fbo);
+  glDeleteFramebuffers(1, &impl_->blur_fbo);
+  glDeleteTextures(1, &impl_->mask_tex);
+  glDeleteTextures(1, &impl_->blur_tex);
 }
 
 void GlPainter::mesh(const Points& x, const std::vector<Triangle>& tris,
@@ -211,35 +294,111 @@ void GlPainter::pixel_triangles(const std::vector<Vec3>& corners, const std::vec
   impl_->draw_flat(v, GL_TRIANGLES, pixel_matrix(width, height));
 }
 
+namespace {
+
+// Where a world point lands in the viewport, in texture coordinates (0 to 1 across).
+Eigen::Vector2f viewport_uv(const Eigen::Matrix4f& vp, const Vec3& p) {
+  const Eigen::Vector4f c = vp * Eigen::Vector4f(float(p.x()), float(p.y()), float(p.z()), 1.0f);
+  return 0.5f * (c.head<2>() / c.w() + Eigen::Vector2f::Ones());
+}
+
+// The penumbra's 40 offsets (a Vogel spiral over a disk of radius `blur` on the ground) as the
+// viewport sees them at the shadow's middle — the perspective changes them by a few per cent
+// across the form — and the part of the viewport the shadow can darken (texture coordinates).
+struct ShadowTaps {
+  static constexpr int copies = 40;
+  std::vector<float> uv;  // x, y of each offset
+  float reach = 0.0f;     // the largest offset, in viewport pixels
+  Eigen::Vector2f lo = Eigen::Vector2f::Ones(), hi = Eigen::Vector2f::Zero();
+};
+
+ShadowTaps shadow_taps(const std::vector<Vec3>& ground, double blur, const Eigen::Matrix4f& vp,
+                       int width, int height) {
+  ShadowTaps t;
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& p : ground) {
+    centre += p;
+    const Eigen::Vector2f q = viewport_uv(vp, p);
+    t.lo = t.lo.cwiseMin(q);
+    t.hi = t.hi.cwiseMax(q);
+  }
+  centre /= static_cast<double>(ground.size());
+  const Eigen::Vector2f mid = viewport_uv(vp, centre);
+  float far = 0.0f;
+  for (int c = 0; c < ShadowTaps::copies; ++c) {
+    const double r = blur * std::sqrt((c + 0.5) / ShadowTaps::copies), a = 2.39996323 * c;
+    const Eigen::Vector2f d =
+        viewport_uv(vp, centre + Vec3(r * std::cos(a), r * std::sin(a), 0)) - mid;
+    t.uv.push_back(d.x());
+    t.uv.push_back(d.y());
+    far = std::max(far, d.norm());
+    t.reach = std::max(t.reach, std::hypot(d.x() * float(width), d.y() * float(height)));
+  }
+  // Twice the farthest offset: the perspective stretches the offsets away from the middle.
+  t.lo = (t.lo.array() - 2.0f * far).cwiseMax(0.0f);
+  t.hi = (t.hi.array() + 2.0f * far).cwiseMin(1.0f);
+  return t;
+}
+
+// The scissor box of a width x height target over the part [lo, hi] of it (texture coordinates).
+void scissor(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, int width, int height) {
+  const int x0 = static_cast<int>(std::floor(lo.x() * float(width)));
+  const int y0 = static_cast<int>(std::floor(lo.y() * float(height)));
+  const int x1 = static_cast<int>(std::ceil(hi.x() * float(width)));
+  const int y1 = static_cast<int>(std::ceil(hi.y() * float(height)));
+  glScissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
+}
+
+}  // namespace
+
 void GlPainter::shadow(const Points& x, const std::vector<Triangle>& tris, double ground_z,
                        double blur, const Eigen::Matrix4f& vp) {
-  // The form flattened onto the ground, drawn 40 times at offsets spread over a disk of
-  // radius `blur` with a little grey each: a soft penumbra. The stencil lets each copy darken a
-  // pixel once however often the flattened sheet overlaps itself there.
+  // The form flattened onto the ground, lit from straight above, with a penumbra: what drawing
+  // it 40 times at offsets spread over a disk of radius `blur`, each copy 1.2 % grey, gives —
+  // computed as the silhouette drawn once off screen and averaged over the same 40 offsets, at
+  // a resolution the penumbra hides (a tenth of its radius per pixel), then laid over the
+  // ground where it can fall. The 40 full-size copies were most of a run's picture time
+  // (docs/performance.md, "Pictures").
+  if (tris.empty()) return;
+  GLint target = 0, viewport[4] = {0, 0, 1, 1};
+  GLfloat clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
   std::vector<Vertex> verts;
+  std::vector<Vec3> ground;
   verts.reserve(tris.size() * 3);
+  ground.reserve(tris.size() * 3);
   for (const Triangle& t : tris)
-    for (int k = 0; k < 3; ++k)
-      verts.push_back(flat_vertex(Vec3(x(0, t[k]), x(1, t[k]), ground_z), Rgb(0.25f, 0.27f, 0.3f)));
-  constexpr int copies = 40;
+    for (int k = 0; k < 3; ++k) {
+      ground.emplace_back(x(0, t[k]), x(1, t[k]), ground_z);
+      verts.push_back(flat_vertex(ground.back(), Rgb(1.0f, 1.0f, 1.0f)));
+    }
+  const ShadowTaps taps = shadow_taps(ground, blur, vp, viewport[2], viewport[3]);
+  const int shrink = std::max(1, static_cast<int>(taps.reach / 10.0f));
+  Impl& r = *impl_;
+  r.shadow_targets(std::max(1, viewport[2] / shrink), std::max(1, viewport[3] / shrink));
+  glViewport(0, 0, r.mask_w, r.mask_h);
+  glBindFramebuffer(GL_FRAMEBUFFER, r.mask_fbo);
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  r.draw_flat(verts, GL_TRIANGLES, vp);
+  glBindFramebuffer(GL_FRAMEBUFFER, r.blur_fbo);
+  glClear(GL_COLOR_BUFFER_BIT);  // no earlier shadow's coverage just outside the box
+  glClearColor(clear[0], clear[1], clear[2], clear[3]);
+  glEnable(GL_SCISSOR_TEST);
+  scissor(taps.lo, taps.hi, r.mask_w, r.mask_h);
+  glUseProgram(r.blur_program);
+  glUniform2fv(glGetUniformLocation(r.blur_program, "taps"), ShadowTaps::copies, taps.uv.data());
+  r.screen_pass(r.blur_program, r.mask_tex, "mask");
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  scissor(taps.lo, taps.hi, viewport[2], viewport[3]);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glEnable(GL_STENCIL_TEST);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  glStencilFunc(GL_EQUAL, 0, 0xFF);
-  impl_->alpha = 0.012f;
-  for (int c = 0; c < copies; ++c) {
-    // A Vogel spiral: even cover of the disk, the same for every picture.
-    const double r = blur * std::sqrt((c + 0.5) / copies), a = 2.39996323 * c;
-    Eigen::Matrix4f shifted = Eigen::Matrix4f::Identity();
-    shifted(0, 3) = static_cast<float>(r * std::cos(a));
-    shifted(1, 3) = static_cast<float>(r * std::sin(a));
-    glClear(GL_STENCIL_BUFFER_BIT);
-    impl_->draw_flat(verts, GL_TRIANGLES, vp * shifted);
-  }
-  impl_->alpha = 1.0f;
-  glDisable(GL_STENCIL_TEST);
+  r.screen_pass(r.shadow_program, r.blur_tex, "coverage");
   glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void GlPainter::text(const std::string& str, float x, float y, float pixel_height, const Rgb& color,

@@ -43,7 +43,7 @@ class GlPainter {
   void pixel_triangles(const std::vector<Vec3>& corners, const std::vector<Rgb>& colors, int width,
                        int height);
   // The form's soft shadow on the plane z = ground_z below it, lit from straight above, its
-  // penumbra `blur` wide (world units). Drawn before the form, without depth; needs a stencil.
+  // penumbra `blur` wide (world units). Drawn before the form, without depth.
   void shadow(const Points& x, const std::vector<Triangle>& triangles, double ground_z, double blur,
               const Eigen::Matrix4f& view_projection);
   // A line of antialiased text (font.hpp), its box's top-left corner at pixel (x, y) of a width
