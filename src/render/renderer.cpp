@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numbers>
+#include <vector>
 
 #include "membra/core/stop_request.hpp"
 #include "membra/geometry/orbit_camera.hpp"
@@ -29,6 +31,7 @@ struct Renderer::Impl {
   EGLContext context = EGL_NO_CONTEXT;
   GLuint fbo = 0, color_rb = 0, depth_rb = 0;
   std::unique_ptr<GlPainter> painter;
+  std::vector<std::uint8_t> readback;  // the framebuffer's RGBA, kept between pictures
 };
 
 Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
@@ -120,20 +123,35 @@ OrbitCamera framing(const Points& x, const Camera& cam, double aspect) {
   return orbit;
 }
 
-// The supersampled framebuffer averaged down to the image, rows from the top.
-Image downsample(const Image& big, int ss) {
-  if (ss == 1) return big;
-  Image img = blank_image(big.width / ss, big.height / ss);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        int sum = 0;
-        for (int dy = 0; dy < ss; ++dy)
-          for (int dx = 0; dx < ss; ++dx)
-            sum += big.rgb[((static_cast<size_t>(y * ss + dy)) * big.width + x * ss + dx) * 3 + c];
-        img.rgb[(static_cast<size_t>(y) * img.width + x) * 3 + c] =
-            static_cast<std::uint8_t>((sum + ss * ss / 2) / (ss * ss));
+// The framebuffer read back and averaged down, ss x ss of its pixels to each of the image's,
+// rows from the top (OpenGL's start at the bottom), in one pass over a read-back buffer kept
+// between pictures: a fresh 40 MB buffer, copied once to flip it and again to average it, was
+// half of a picture's time without its shadow (docs/performance.md, "Pictures").
+Image read_image(int width, int height, int ss, std::vector<std::uint8_t>& rgba) {
+  const int fw = ss * width, fh = ss * height, n = ss * ss;
+  rgba.resize(static_cast<size_t>(fw) * fh * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, fw, fh, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  Image img = blank_image(width, height);
+  std::vector<int> sum(static_cast<size_t>(width) * 3);
+  for (int y = 0; y < height; ++y) {
+    std::fill(sum.begin(), sum.end(), 0);
+    for (int dy = 0; dy < ss; ++dy) {
+      const std::uint8_t* row = rgba.data() + static_cast<size_t>(fh - 1 - (y * ss + dy)) * fw * 4;
+      for (int x = 0; x < width; ++x) {
+        int* s = &sum[static_cast<size_t>(x) * 3];
+        for (const std::uint8_t* p = row + static_cast<size_t>(x) * ss * 4;
+             p < row + static_cast<size_t>(x + 1) * ss * 4; p += 4) {
+          s[0] += p[0];
+          s[1] += p[1];
+          s[2] += p[2];
+        }
       }
+    }
+    std::uint8_t* out = img.rgb.data() + static_cast<size_t>(y) * width * 3;
+    for (size_t i = 0; i < sum.size(); ++i)
+      out[i] = static_cast<std::uint8_t>((sum[i] + n / 2) / n);
+  }
   return img;
 }
 
@@ -187,7 +205,7 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
     r.painter->scale_bar(mesh_h * fh / (2.0 * orbit.half_height), fw, fh);
   if (legend) r.painter->legend(*legend, fw, fh);
   if (!title.empty()) r.painter->heading(title, fw, fh);
-  return downsample(read_pixels(fw, fh), r.ss);
+  return read_image(r.width, r.height, r.ss, r.readback);
 }
 
 Image read_pixels(int width, int height) {
