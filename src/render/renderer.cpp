@@ -4,13 +4,16 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/glcorearb.h>
-#include <stb_image_write.h>
+#include <png.h>
 
 #include <algorithm>
 #include <cmath>
+#include <csetjmp>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "membra/core/stop_request.hpp"
@@ -262,22 +265,57 @@ Image blank_image(int width, int height) {
   return {width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 3, 255)};
 }
 
+namespace {
+
+// libpng reports errors by a long jump back to png_encode's setjmp; nothing between holds a
+// C++ object with a destructor, and the output vector is made before.
+void append_bytes(png_structp png, png_bytep data, png_size_t size) {
+  auto* out = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
+  try {
+    out->insert(out->end(), data, data + size);
+  } catch (...) {
+    png_error(png, "out of memory");
+  }
+}
+
+bool png_encode(const Image& image, std::vector<std::uint8_t>& out) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, &out, append_bytes, nullptr);
+  // zlib's level 3 with each row predicted from its left neighbour: 4x faster than stb's writer
+  // and a quarter smaller (docs/performance.md, "Pictures").
+  png_set_compression_level(png, 3);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y)
+    png_write_row(png, image.rgb.data() + static_cast<size_t>(y) * image.width * 3);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> encode_png(const Image& image) {
   std::vector<std::uint8_t> png;
-  stbi_write_png_to_func(
-      [](void* ctx, void* data, int size) {
-        auto* out = static_cast<std::vector<std::uint8_t>*>(ctx);
-        const auto* bytes = static_cast<std::uint8_t*>(data);
-        out->insert(out->end(), bytes, bytes + size);
-      },
-      &png, image.width, image.height, 3, image.rgb.data(), image.width * 3);
+  if (image.width <= 0 || image.height <= 0 || !png_encode(image, png))
+    throw RenderError("cannot encode a " + std::to_string(image.width) + " x " +
+                      std::to_string(image.height) + " PNG");
   return png;
 }
 
 void write_png(const std::filesystem::path& file, const Image& image) {
-  if (!stbi_write_png(file.c_str(), image.width, image.height, 3, image.rgb.data(),
-                      image.width * 3))
-    throw RenderError(file.string() + ": cannot write PNG");
+  const std::vector<std::uint8_t> png = encode_png(image);
+  std::ofstream out(file, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  if (!out.flush()) throw RenderError(file.string() + ": cannot write PNG");
 }
 
 }  // namespace membra

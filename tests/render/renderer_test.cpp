@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "membra/geometry/grid_sheet.hpp"
 #include "membra/geometry/triangulation.hpp"
+#include "membra/io/image.hpp"
 #include "membra/render/renderer.hpp"
 
 namespace membra {
@@ -139,6 +142,33 @@ TEST(Renderer, LabelsStayInsideTheImageAtAnySize) {
 
 // Supersampling: the silhouette of a flat blue sheet seen from above has pixels between blue
 // and white; without it every pixel would be one or the other.
+// A picture's PNG decodes to its pixels (a grey one, which the scene reader decodes), at a width
+// whose rows are not a multiple of four bytes; a file that cannot be written says which.
+TEST(Renderer, APngHoldsThePicturesPixels) {
+  Image img = blank_image(17, 5);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        img.rgb[(static_cast<size_t>(y) * img.width + x) * 3 + c] =
+            static_cast<std::uint8_t>((37 * x + 91 * y) % 256);
+  const std::vector<std::uint8_t> png = encode_png(img);
+  const GreyImage grey = decode_grey_image(png.data(), png.size(), "p.png", "test");
+  ASSERT_EQ(grey.width, 17);
+  ASSERT_EQ(grey.height, 5);
+  int wrong = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      wrong += std::abs(grey.value[static_cast<size_t>(y) * 17 + x] * 255.0 -
+                        (37 * x + 91 * y) % 256) > 0.01;
+  EXPECT_EQ(wrong, 0);
+  try {
+    write_png("/nonexistent-directory/p.png", img);
+    ADD_FAILURE() << "no error";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent-directory/p.png"), std::string::npos);
+  }
+}
+
 TEST(Renderer, EdgesAreAntialiased) {
   TestSheet s = test_sheet(0.0);
   std::fill(s.colors.begin(), s.colors.end(), Rgb(0.0f, 0.0f, 1.0f));
