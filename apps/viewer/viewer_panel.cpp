@@ -58,9 +58,8 @@ void ViewerWindow::Impl::panel_status(const ViewerSession& s) {
   if (s.crossings().pairs > 0) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.2f, 1.0f));
     ImGui::TextWrapped(
-        "the form passes through itself: %ld pairs of triangles cross (outlined in magenta); no "
-        "real sheet takes it there",
-        s.crossings().pairs);
+        "the form passes through itself: %s (outlined in magenta); no real sheet takes it there",
+        crossing_summary(s.crossings()).c_str());
     ImGui::PopStyleColor();
   }
 }

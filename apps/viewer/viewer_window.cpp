@@ -257,16 +257,8 @@ void ViewerWindow::Impl::draw_springs_and_particles(const Membrane& m, const Vie
 // depth test is off) in magenta, which nothing else in the view uses (the colour maps, the
 // springs' families, the frame): where the form is not one a real sheet can take.
 void ViewerWindow::Impl::draw_crossings(const ViewerSession& s, const Eigen::Matrix4f& vp) {
-  const Points& x = s.membrane().state.x;
-  const std::vector<Triangle>& tris = s.membrane().sheet.triangles;
-  std::vector<Vec3> ends;
-  for (int t : s.crossings().triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Triangle& tri = tris[static_cast<size_t>(t)];
-      ends.push_back(x.col(tri[k]));
-      ends.push_back(x.col(tri[(k + 1) % 3]));
-    }
-  if (!ends.empty()) painter->lines(ends, Rgb(1.0f, 0.0f, 1.0f), vp);
+  painter->outline(s.membrane().state.x, s.membrane().sheet.triangles, s.crossings().triangles,
+                   kCrossingColour, vp);
 }
 
 // The frame's outline in the 2-D view and the cut being dragged.

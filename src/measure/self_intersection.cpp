@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <utility>
 
+#include "membra/core/units.hpp"
 #include "membra/geometry/box_grid.hpp"
 
 namespace membra {
@@ -88,6 +91,15 @@ SelfIntersection self_intersections(const Points& x, const std::vector<Triangle>
   out.at = nearest_to_mean(x, tris, crossing);
   out.triangles = std::move(crossing);
   return out;
+}
+
+std::string crossing_summary(const SelfIntersection& si) {
+  char at[96];
+  // Rounded first, then + 0.0: no "-0" for a coordinate just below zero.
+  const auto mm = [](double v) { return std::round(v / units::mm) + 0.0; };
+  std::snprintf(at, sizeof at, "(%.0f, %.0f, %.0f) mm", mm(si.at.x()), mm(si.at.y()),
+                mm(si.at.z()));
+  return std::to_string(si.pairs) + " pairs of triangles cross, around " + at;
 }
 
 }  // namespace membra

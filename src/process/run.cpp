@@ -186,16 +186,6 @@ bool SceneRun::solve() {
 
 namespace {
 
-// "N pairs of triangles cross, around (x, y, z) mm": where a form passes through itself.
-std::string crossing_place(const SelfIntersection& si) {
-  char at[96];
-  // Rounded first, then + 0.0: no "-0" for a coordinate just below zero.
-  const auto mm = [](double v) { return std::round(v / units::mm) + 0.0; };
-  std::snprintf(at, sizeof at, "(%.0f, %.0f, %.0f) mm", mm(si.at.x()), mm(si.at.y()),
-                mm(si.at.z()));
-  return std::to_string(si.pairs) + " pairs of triangles cross, around " + at;
-}
-
 // What keeps a form from crossing itself, for the scene as it was run.
 std::string contact_advice(const Scene& scene) {
   if (scene.model == SheetModel::lattice)
@@ -216,7 +206,7 @@ std::vector<std::string> run_warnings(const Scene& scene, const RunResult& r) {
   if (const auto coarse = coarse_grid(scene)) out.push_back(coarse->message);
   if (r.solve.diverged) return out;
   if (r.self_intersection.pairs > 0)
-    out.push_back("the form passes through itself: " + crossing_place(r.self_intersection) +
+    out.push_back("the form passes through itself: " + crossing_summary(r.self_intersection) +
                   " (final.obj's frame); no real sheet takes this form there. " +
                   contact_advice(scene) +
                   " (docs/measures.md, \"A form that passes through itself\")");
@@ -228,7 +218,7 @@ std::vector<std::string> run_warnings(const Scene& scene, const RunResult& r) {
             r.branches[k].releases.end())
       out.push_back("simulation.explore: form " + std::to_string(k + 1) + " (branches/" +
                     std::to_string(k + 1) + "/) passes through itself: " +
-                    crossing_place(r.branches[k].run.self_intersection));
+                    crossing_summary(r.branches[k].run.self_intersection));
   return out;
 }
 

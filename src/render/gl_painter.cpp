@@ -166,10 +166,11 @@ struct GlPainter::Impl {
   void shadow_targets(int w, int h) {
     if (w == mask_w && h == mask_h) return;
     const float border[] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glActiveTexture(GL_TEXTURE0);
     for (auto [fbo, tex, format] :
          {std::tuple{mask_fbo, mask_tex, GL_R8}, std::tuple{blur_fbo, blur_tex, GL_R16F}}) {
       glBindTexture(GL_TEXTURE_2D, tex);
-      glTexImage2D(GL_TEXTURE_2D, 0, format, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+      glTexImage2D(GL_TEXTURE_2D, 0, format, w, h, 0, GL_RED, GL_FLOAT, nullptr);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
@@ -270,11 +271,29 @@ void GlPainter::mesh(const Points& x, const std::vector<Triangle>& tris,
 }
 
 void GlPainter::lines(const std::vector<Vec3>& endpoints, const Rgb& color,
-                      const Eigen::Matrix4f& vp) {
+                      const Eigen::Matrix4f& vp, float width) {
   std::vector<Vertex> v;
   v.reserve(endpoints.size());
   for (const Vec3& p : endpoints) v.push_back(flat_vertex(p, color));
+  glLineWidth(width * pixel_scale_);
   impl_->draw_flat(v, GL_LINES, vp);
+  glLineWidth(1.0f);
+}
+
+void GlPainter::outline(const Points& x, const std::vector<Triangle>& tris,
+                        const std::vector<int>& which, const Rgb& color, const Eigen::Matrix4f& vp,
+                        float width) {
+  std::vector<Vec3> ends;
+  ends.reserve(which.size() * 6);
+  for (const int t : which) {
+    if (t < 0 || static_cast<size_t>(t) >= tris.size()) continue;
+    const Triangle& tri = tris[static_cast<size_t>(t)];
+    for (int k = 0; k < 3; ++k) {
+      ends.push_back(x.col(tri[k]));
+      ends.push_back(x.col(tri[(k + 1) % 3]));
+    }
+  }
+  if (!ends.empty()) lines(ends, color, vp, width);
 }
 
 void GlPainter::points(const std::vector<Vec3>& pts, const Rgb& color, float size,
@@ -299,12 +318,12 @@ namespace {
 // Where a world point lands in the viewport, in texture coordinates (0 to 1 across).
 Eigen::Vector2f viewport_uv(const Eigen::Matrix4f& vp, const Vec3& p) {
   const Eigen::Vector4f c = vp * Eigen::Vector4f(float(p.x()), float(p.y()), float(p.z()), 1.0f);
-  return 0.5f * (c.head<2>() / c.w() + Eigen::Vector2f::Ones());
+  return 0.5f * (c.head<2>() / std::max(c.w(), 1e-6f) + Eigen::Vector2f::Ones());
 }
 
 // The penumbra's 40 offsets (a Vogel spiral over a disk of radius `blur` on the ground) as the
-// viewport sees them at the shadow's middle — the perspective changes them by a few per cent
-// across the form — and the part of the viewport the shadow can darken (texture coordinates).
+// viewport sees them (the pictures' cameras are orthographic: the same everywhere), and the part
+// of the viewport the shadow can darken (texture coordinates).
 struct ShadowTaps {
   static constexpr int copies = 40;
   std::vector<float> uv;  // x, y of each offset
@@ -334,20 +353,54 @@ ShadowTaps shadow_taps(const std::vector<Vec3>& ground, double blur, const Eigen
     far = std::max(far, d.norm());
     t.reach = std::max(t.reach, std::hypot(d.x() * float(width), d.y() * float(height)));
   }
-  // Twice the farthest offset: the perspective stretches the offsets away from the middle.
+  // The silhouette's box grown by the farthest offset, and as much again for the mask's coarse
+  // pixels.
   t.lo = (t.lo.array() - 2.0f * far).cwiseMax(0.0f);
   t.hi = (t.hi.array() + 2.0f * far).cwiseMin(1.0f);
   return t;
 }
 
-// The scissor box of a width x height target over the part [lo, hi] of it (texture coordinates).
-void scissor(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, int width, int height) {
-  const int x0 = static_cast<int>(std::floor(lo.x() * float(width)));
-  const int y0 = static_cast<int>(std::floor(lo.y() * float(height)));
-  const int x1 = static_cast<int>(std::ceil(hi.x() * float(width)));
-  const int y1 = static_cast<int>(std::ceil(hi.y() * float(height)));
-  glScissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
+// The scissor box over the part [lo, hi] (texture coordinates) of a viewport (x, y, width,
+// height in window pixels).
+void scissor(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, const GLint* viewport) {
+  const float w = static_cast<float>(viewport[2]), h = static_cast<float>(viewport[3]);
+  const int x0 = static_cast<int>(std::floor(lo.x() * w)),
+            y0 = static_cast<int>(std::floor(lo.y() * h));
+  const int x1 = static_cast<int>(std::ceil(hi.x() * w)),
+            y1 = static_cast<int>(std::ceil(hi.y() * h));
+  glScissor(viewport[0] + x0, viewport[1] + y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
 }
+
+// The caller's target as the shadow's off-screen passes find it, put back when they are done:
+// the framebuffer, its viewport, the clear colour and the scissor test.
+struct SavedTarget {
+  GLint framebuffer = 0, viewport[4] = {0, 0, 1, 1}, box[4] = {0, 0, 1, 1};
+  GLfloat clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  GLboolean scissored = GL_FALSE;
+  SavedTarget() {
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glGetIntegerv(GL_SCISSOR_BOX, box);
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+    scissored = glIsEnabled(GL_SCISSOR_TEST);
+  }
+  // Back to the caller's framebuffer and viewport (the scissor test as the caller's pass wants).
+  void bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  }
+  ~SavedTarget() {
+    bind();
+    glClearColor(clear[0], clear[1], clear[2], clear[3]);
+    glScissor(box[0], box[1], box[2], box[3]);
+    if (scissored)
+      glEnable(GL_SCISSOR_TEST);
+    else
+      glDisable(GL_SCISSOR_TEST);
+  }
+  SavedTarget(const SavedTarget&) = delete;
+  SavedTarget& operator=(const SavedTarget&) = delete;
+};
 
 }  // namespace
 
@@ -360,11 +413,7 @@ void GlPainter::shadow(const Points& x, const std::vector<Triangle>& tris, doubl
   // ground where it can fall. The 40 full-size copies were most of a run's picture time
   // (docs/performance.md, "Pictures").
   if (tris.empty()) return;
-  GLint target = 0, viewport[4] = {0, 0, 1, 1};
-  GLfloat clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &target);
-  glGetIntegerv(GL_VIEWPORT, viewport);
-  glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+  const SavedTarget saved;
   std::vector<Vertex> verts;
   std::vector<Vec3> ground;
   verts.reserve(tris.size() * 3);
@@ -374,10 +423,12 @@ void GlPainter::shadow(const Points& x, const std::vector<Triangle>& tris, doubl
       ground.emplace_back(x(0, t[k]), x(1, t[k]), ground_z);
       verts.push_back(flat_vertex(ground.back(), Rgb(1.0f, 1.0f, 1.0f)));
     }
+  const GLint* viewport = saved.viewport;
   const ShadowTaps taps = shadow_taps(ground, blur, vp, viewport[2], viewport[3]);
   const int shrink = std::max(1, static_cast<int>(taps.reach / 10.0f));
   Impl& r = *impl_;
   r.shadow_targets(std::max(1, viewport[2] / shrink), std::max(1, viewport[3] / shrink));
+  glDisable(GL_SCISSOR_TEST);
   glViewport(0, 0, r.mask_w, r.mask_h);
   glBindFramebuffer(GL_FRAMEBUFFER, r.mask_fbo);
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
@@ -385,20 +436,18 @@ void GlPainter::shadow(const Points& x, const std::vector<Triangle>& tris, doubl
   r.draw_flat(verts, GL_TRIANGLES, vp);
   glBindFramebuffer(GL_FRAMEBUFFER, r.blur_fbo);
   glClear(GL_COLOR_BUFFER_BIT);  // no earlier shadow's coverage just outside the box
-  glClearColor(clear[0], clear[1], clear[2], clear[3]);
   glEnable(GL_SCISSOR_TEST);
-  scissor(taps.lo, taps.hi, r.mask_w, r.mask_h);
+  const GLint mask_viewport[4] = {0, 0, r.mask_w, r.mask_h};
+  scissor(taps.lo, taps.hi, mask_viewport);
   glUseProgram(r.blur_program);
   glUniform2fv(glGetUniformLocation(r.blur_program, "taps"), ShadowTaps::copies, taps.uv.data());
   r.screen_pass(r.blur_program, r.mask_tex, "mask");
-  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  scissor(taps.lo, taps.hi, viewport[2], viewport[3]);
+  saved.bind();
+  scissor(taps.lo, taps.hi, viewport);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   r.screen_pass(r.shadow_program, r.blur_tex, "coverage");
   glDisable(GL_BLEND);
-  glDisable(GL_SCISSOR_TEST);
 }
 
 void GlPainter::text(const std::string& str, float x, float y, float pixel_height, const Rgb& color,
@@ -456,14 +505,19 @@ void GlPainter::heading(const std::string& title, int width, int height) {
   const Font& font = Font::standard();
   // Shrunk to fit the width; where even the least legible size is too wide, shortened with an
   // ellipsis rather than cut off by the image's edge.
-  if (const float w = font.width(title, px); w > room) px = std::max(least, px * room / w);
+  // The width is not quite proportional to the size (glyphs fall on whole pixels): shrunk again
+  // until it fits, each time by at least half a per cent.
+  for (float w = font.width(title, px); w > room && px > least; w = font.width(title, px))
+    px = std::max(least, std::min(0.995f * px, px * room / w));
+  // (A title that fits once shrunk is drawn whole: it was cut before when the ellipsis alone
+  // would not have fitted beside it.)
   std::string shown = title;
-  while (!shown.empty() && font.width(shown + "\u2026", px) > room) {
-    shown.pop_back();
-    while (!shown.empty() && (static_cast<unsigned char>(shown.back()) & 0xC0) == 0x80)
-      shown.pop_back();  // a whole UTF-8 sequence at a time
-    if (shown.empty()) return;
-  }
+  if (font.width(title, px) > room) do {
+      shown.pop_back();
+      while (!shown.empty() && (static_cast<unsigned char>(shown.back()) & 0xC0) == 0x80)
+        shown.pop_back();  // a whole UTF-8 sequence at a time
+      if (shown.empty()) return;
+    } while (font.width(shown + "\u2026", px) > room);
   text(shown == title ? title : shown + "\u2026", margin, margin, px, Rgb(0.1f, 0.1f, 0.1f), width,
        height);
 }

@@ -19,6 +19,7 @@
 #include "membra/core/stop_request.hpp"
 #include "membra/geometry/orbit_camera.hpp"
 #include "membra/render/font.hpp"
+#include "membra/render/gl_painter.hpp"
 
 namespace membra {
 
@@ -72,7 +73,8 @@ Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
   // down, which smooths the mesh's silhouette, the shadow and the text alike.
   GLint max_size = 4096;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
-  // At most 36 M framebuffer pixels (about 300 MB with depth and read-back): large pictures
+  // At most 36 M framebuffer pixels (about 430 MB with depth and the read-back buffer, which
+  // the renderer keeps while it lives: 39 MB at the default 1200 x 900): large pictures
   // are sampled less, 8192 x 6144 not at all.
   const double pixels = static_cast<double>(width) * height;
   r.ss = std::clamp(std::min(3, max_size / std::max(width, height)), 1, 3);
@@ -86,9 +88,8 @@ Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r.color_rb);
   glGenRenderbuffers(1, &r.depth_rb);
   glBindRenderbuffer(GL_RENDERBUFFER, r.depth_rb);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, fw, fh);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                            r.depth_rb);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, fw, fh);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r.depth_rb);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw RenderError("incomplete framebuffer");
 
@@ -162,7 +163,7 @@ Image read_image(int width, int height, int ss, std::vector<std::uint8_t>& rgba)
 
 Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
                        const std::vector<Rgb>& colors, const Camera& cam, const Legend* legend,
-                       const std::string& caption) {
+                       const std::string& caption, const std::vector<int>& outlined) {
   // A stop asked for (Ctrl-C) while a run's pictures are drawn: before another large render.
   if (const int sig = stop_requested()) throw Interrupted(sig, "while writing the outputs");
   Impl& r = *impl_;
@@ -171,8 +172,7 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
   glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
   glViewport(0, 0, fw, fh);
   glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-  glClearStencil(0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
   std::string title = legend ? legend->title : "";
   if (!caption.empty()) title = title.empty() ? caption : caption + " \u00b7 " + title;
@@ -203,6 +203,7 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
   glEnable(GL_DEPTH_TEST);
   r.painter->mesh(x, tris, colors, vp, rotf);
   glDisable(GL_DEPTH_TEST);
+  r.painter->outline(x, tris, outlined, kCrossingColour, vp, 2.0f);
   // The projection maps half_height world units to half the form's band of framebuffer rows.
   if (cam.scale_bar && x.cols())
     r.painter->scale_bar(mesh_h * fh / (2.0 * orbit.half_height), fw, fh);
@@ -267,25 +268,33 @@ Image blank_image(int width, int height) {
 
 namespace {
 
-// libpng reports errors by a long jump back to png_encode's setjmp; nothing between holds a
-// C++ object with a destructor, and the output vector is made before.
+// libpng reports errors by a long jump back to png_encode's setjmp: png_encode holds no C++
+// object with a destructor after it, and the long jump leaves no catch block.
 void append_bytes(png_structp png, png_bytep data, png_size_t size) {
   auto* out = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
+  bool failed = false;
   try {
     out->insert(out->end(), data, data + size);
   } catch (...) {
-    png_error(png, "out of memory");
+    failed = true;
   }
+  if (failed) png_error(png, "out of memory");
 }
+
+void no_flush(png_structp) {}  // the bytes go to memory (libpng's default flushes a FILE*)
 
 bool png_encode(const Image& image, std::vector<std::uint8_t>& out) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info || setjmp(png_jmpbuf(png))) {
+  if (!info) {
     png_destroy_write_struct(&png, &info);
     return false;
   }
-  png_set_write_fn(png, &out, append_bytes, nullptr);
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, &out, append_bytes, no_flush);
   // zlib's level 3 with each row predicted from its left neighbour: 4x faster than stb's writer
   // and a quarter smaller (docs/performance.md, "Pictures").
   png_set_compression_level(png, 3);
@@ -305,17 +314,25 @@ bool png_encode(const Image& image, std::vector<std::uint8_t>& out) {
 
 std::vector<std::uint8_t> encode_png(const Image& image) {
   std::vector<std::uint8_t> png;
-  if (image.width <= 0 || image.height <= 0 || !png_encode(image, png))
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgb.size() != static_cast<size_t>(image.width) * image.height * 3 ||
+      !png_encode(image, png))
     throw RenderError("cannot encode a " + std::to_string(image.width) + " x " +
                       std::to_string(image.height) + " PNG");
   return png;
 }
 
 void write_png(const std::filesystem::path& file, const Image& image) {
-  const std::vector<std::uint8_t> png = encode_png(image);
+  std::vector<std::uint8_t> png;
+  try {
+    png = encode_png(image);
+  } catch (const RenderError& e) {
+    throw RenderError(file.string() + ": " + e.what());
+  }
   std::ofstream out(file, std::ios::binary);
   out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-  if (!out.flush()) throw RenderError(file.string() + ": cannot write PNG");
+  out.close();
+  if (!out) throw RenderError(file.string() + ": cannot write PNG");
 }
 
 }  // namespace membra

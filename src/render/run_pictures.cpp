@@ -18,6 +18,12 @@ void add_png(OutputSet& out, const std::string& file, const Image& img) {
   });
 }
 
+// Said in the heading of a picture whose form passes through itself, where its crossing
+// triangles are outlined (docs/outputs.md).
+std::string crossing_note(const RunResult& r) {
+  return r.self_intersection.pairs > 0 ? "crosses itself (magenta)" : "";
+}
+
 // Side by side on one colour range: the target map and the measured curvature on the flat sheet
 // (seen from above), and the form.
 void paint_curvature_map(const RunResult& r, const RunStaging& s, const Camera& camera,
@@ -89,7 +95,8 @@ void paint_branches(const RunResult& r, const RunStaging& s, const Camera& camer
                         s.branches[b].lo, s.branches[b].hi, s.options.colormap};
     add_png(out, "branches/" + std::to_string(b + 1) + "/curvature.png",
             renderer.render(f.prepared.membrane.state.x, f.prepared.membrane.sheet.triangles,
-                            s.branches[b].rgb, camera, &legend));
+                            s.branches[b].rgb, camera, &legend, crossing_note(f),
+                            f.self_intersection.triangles));
   }
 }
 
@@ -111,6 +118,12 @@ std::string dimensions(const RunResult& r) {
   return text;
 }
 
+// The heading of the form's pictures: its size, and whether it passes through itself.
+std::string caption(const RunResult& r) {
+  const std::string note = crossing_note(r);
+  return note.empty() ? dimensions(r) : dimensions(r) + " \u00b7 " + note;
+}
+
 // The form three ways, as a drawing shows a piece (docs/outputs.md, "The pose"): the 3/4 view
 // of the other pictures, and orthographic views from the top and from the front (-y), each with
 // its dimensions and a scale bar.
@@ -127,12 +140,15 @@ void paint_views(const RunResult& r, const RunStaging& s, const Camera& camera, 
   const bool fixed = s.options.curvature_range.size() == 2;
   const Legend legend{fixed ? "Gaussian curvature" : "Gaussian curvature (95% in range)", "1/m^2",
                       s.colors.k_lo, s.colors.k_hi, s.options.colormap};
-  blit(views, panel.render(x, tris, s.curvature_rgb, camera, nullptr, "3/4 view: " + dimensions(r)),
+  const std::vector<int>& crossing = r.self_intersection.triangles;
+  blit(views,
+       panel.render(x, tris, s.curvature_rgb, camera, nullptr, "3/4 view: " + caption(r), crossing),
        0, 0);
   Camera from_top{-90.0, 90.0, 1.15, false, true};
-  blit(views, panel.render(x, tris, s.curvature_rgb, from_top, nullptr, top), pw, 0);
+  blit(views, panel.render(x, tris, s.curvature_rgb, from_top, nullptr, top, crossing), pw, 0);
   Camera from_front{-90.0, 0.0, 1.15, false, true};
-  blit(views, panel.render(x, tris, s.curvature_rgb, from_front, &legend, side), 2 * pw, 0);
+  blit(views, panel.render(x, tris, s.curvature_rgb, from_front, &legend, side, crossing), 2 * pw,
+       0);
   add_png(out, "views.png", views);
 }
 
@@ -153,7 +169,8 @@ std::string stage_run_pictures(const Scene& scene, const RunResult& r, const Run
     auto picture = [&](const std::string& file, const std::vector<Rgb>& colors,
                        const Legend& legend) {
       add_png(out, file,
-              renderer.render(x, mesh.triangles, colors, camera, &legend, dimensions(r)));
+              renderer.render(x, mesh.triangles, colors, camera, &legend, caption(r),
+                              r.self_intersection.triangles));
     };
     const bool fixed = s.options.curvature_range.size() == 2;
     picture("curvature.png", s.curvature_rgb,

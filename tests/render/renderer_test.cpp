@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -140,8 +141,6 @@ TEST(Renderer, LabelsStayInsideTheImageAtAnySize) {
   }
 }
 
-// Supersampling: the silhouette of a flat blue sheet seen from above has pixels between blue
-// and white; without it every pixel would be one or the other.
 // A picture's PNG decodes to its pixels (a grey one, which the scene reader decodes), at a width
 // whose rows are not a multiple of four bytes; a file that cannot be written says which.
 TEST(Renderer, APngHoldsThePicturesPixels) {
@@ -169,6 +168,8 @@ TEST(Renderer, APngHoldsThePicturesPixels) {
   }
 }
 
+// Supersampling: the silhouette of a flat blue sheet seen from above has pixels between blue
+// and white; without it every pixel would be one or the other.
 TEST(Renderer, EdgesAreAntialiased) {
   TestSheet s = test_sheet(0.0);
   std::fill(s.colors.begin(), s.colors.end(), Rgb(0.0f, 0.0f, 1.0f));
@@ -193,7 +194,7 @@ TEST(Renderer, SoftShadowOnTheGround) {
   };
   const Image with = picture(true), without = picture(false);
   // The shadow's pixels: background that the shadow changed (the form is drawn over it alike).
-  int shadow = 0, levels = 0, background = 0;
+  int shadow = 0, levels = 0, background = 0, coloured = 0;
   float darkest = 1.0f;
   std::vector<bool> seen(256, false);
   for (int y = 0; y < with.height; ++y)
@@ -203,13 +204,14 @@ TEST(Renderer, SoftShadowOnTheGround) {
       ++background;
       if ((c - plain).cwiseAbs().maxCoeff() < 0.01f) continue;
       ++shadow;
-      EXPECT_LT(c.maxCoeff() - c.minCoeff(), 0.06f) << "a grey shadow at " << x << ", " << y;
+      coloured += c.maxCoeff() - c.minCoeff() > 0.06f;
       const int v = static_cast<int>(c.x() * 255);
       levels += !seen[static_cast<size_t>(v)];
       seen[static_cast<size_t>(v)] = true;
       darkest = std::min(darkest, c.x());
     }
   EXPECT_GT(shadow, 500);
+  EXPECT_EQ(coloured, 0);         // grey
   EXPECT_LT(shadow, background);  // on the ground around the form, not over the picture
   EXPECT_GT(levels, 8);           // a soft penumbra, not one flat grey
   // Where the whole penumbra's disk is under the sheet: 40 copies of 1.2 % grey (0.25) on white.
@@ -236,6 +238,62 @@ TEST(Renderer, ASecondRendererEndingLeavesTheFirstDrawing) {
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) white += img.pixel(x, y).minCoeff() > 0.97f;
   EXPECT_GT(white, img.width * img.height / 4);  // the white background, not a black frame
+}
+
+// The penumbra about a straight edge, seen from straight above: half the 40 copies cover the
+// edge, the share beyond it falls as a disk of radius `blur` (3 % of the form's diagonal) leaves
+// it — (acos r - r sqrt(1 - r^2)) / pi at r radii out — and nothing reaches past one radius.
+// The same on the left, right and far edges: in place and to scale on both axes.
+TEST(Renderer, ThePenumbraIsADiskOfTheBlurRadiusAboutTheEdges) {
+  TestSheet s = test_sheet(0.0);  // 200 x 100 mm, flat
+  std::fill(s.colors.begin(), s.colors.end(), Rgb(0.0f, 0.0f, 1.0f));
+  Renderer renderer(400, 300);
+  const Image img = renderer.render(s.x, s.tris, s.colors, Camera{-90.0, 90.0, 1.1, true}, nullptr);
+  const auto blue = [&](int x, int y) { return img.pixel(x, y).x() < 0.5f; };
+  const int mid_y = img.height / 2, mid_x = img.width / 2;
+  int left = 0, right = img.width - 1, top = 0;
+  while (left < img.width && !blue(left, mid_y)) ++left;
+  while (right > 0 && !blue(right, mid_y)) --right;
+  while (top < img.height && !blue(mid_x, top)) ++top;
+  ASSERT_LT(left, right);
+  const double per_m = (right - left + 1) / 0.2;  // pixels per metre, both axes
+  EXPECT_NEAR((mid_y - top) / per_m, 0.05, 0.003);
+  const double blur = 0.03 * std::hypot(0.2, 0.1) * per_m;  // pixels
+  const auto expected = [](double r) {
+    const double share =
+        r >= 1.0 ? 0.0 : (std::acos(r) - r * std::sqrt(1.0 - r * r)) / std::numbers::pi;
+    return 1.0 - (1.0 - std::pow(0.988, 40.0 * share)) * 0.75;
+  };
+  for (const double r : {0.15, 0.4, 0.7, 1.3}) {
+    const int d = static_cast<int>(std::lround(r * blur));
+    // The pixel's centre d + 1/2 pixels beyond the last pixel of the sheet's edge.
+    const double at = (d + 0.5) / blur;
+    EXPECT_NEAR(img.pixel(right + 1 + d, mid_y).x(), expected(at), 0.035) << "right, r " << r;
+    EXPECT_NEAR(img.pixel(left - 1 - d, mid_y).x(), expected(at), 0.035) << "left, r " << r;
+    EXPECT_NEAR(img.pixel(mid_x, top - 1 - d).x(), expected(at), 0.035) << "far, r " << r;
+  }
+}
+
+// Triangles asked to be outlined (where a form passes through itself) are drawn in magenta over
+// the form, two image pixels wide; nothing else in a picture is magenta.
+TEST(Renderer, OutlinedTrianglesAreMagentaOverTheForm) {
+  const TestSheet s = test_sheet(0.02);
+  Renderer renderer(320, 240);
+  const auto magenta = [&](const std::vector<int>& outlined) {
+    const Image img = renderer.render(s.x, s.tris, s.colors, Camera{}, nullptr, "", outlined);
+    int n = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const Rgb c = img.pixel(x, y);
+        n += c.x() > 0.8f && c.z() > 0.8f && c.y() < 0.25f;
+      }
+    return n;
+  };
+  EXPECT_EQ(magenta({}), 0);
+  EXPECT_EQ(magenta({-1, 100000}), 0);  // not triangles of the mesh: skipped
+  const int one = magenta({50}), three = magenta({50, 120, 300});
+  EXPECT_GT(one, 40);  // three edges of a 10 mm triangle, about 2 pixels wide
+  EXPECT_GT(three, 2 * one);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // one part of a released sheet from settling through another, and the solvers then report an
 // equilibrium that no real sheet can take (docs/measures.md, "A form that passes through
 // itself"). This finds the triangles that cross, so the run can say so.
+#include <string>
 #include <vector>
 
 #include "membra/core/vec.hpp"
@@ -25,5 +26,9 @@ struct SelfIntersection {
 // its square (a graded mesh's small triangles share cells). Positions that are not finite cross
 // nothing.
 SelfIntersection self_intersections(const Points& x, const std::vector<Triangle>& tris);
+
+// "N pairs of triangles cross, around (x, y, z) mm": how many and where, for the run's warning
+// and the viewer's panel alike.
+std::string crossing_summary(const SelfIntersection& si);
 
 }  // namespace membra

@@ -21,6 +21,10 @@ struct Legend {
   ColourMap map = ColourMap::diverging;
 };
 
+// Where a form passes through itself, in the pictures and the viewer: a colour that no colour
+// map, spring family or frame uses.
+inline const Rgb kCrossingColour{1.0f, 0.0f, 1.0f};
+
 class GlPainter {
  public:
   // Compiles the shaders; an OpenGL 3.3 core context must be current (throws RenderError).
@@ -33,17 +37,23 @@ class GlPainter {
   // space and `rotation` (rows right, up, back) turns normals towards the viewer.
   void mesh(const Points& x, const std::vector<Triangle>& triangles, const std::vector<Rgb>& colors,
             const Eigen::Matrix4f& view_projection, const Eigen::Matrix3f& rotation);
-  // Unlit line segments: endpoints in pairs.
+  // Unlit line segments: endpoints in pairs, `width` image pixels wide.
   void lines(const std::vector<Vec3>& endpoints, const Rgb& color,
-             const Eigen::Matrix4f& view_projection);
+             const Eigen::Matrix4f& view_projection, float width = 1.0f);
+  // The edges of the triangles `which` (indices into `triangles`; others are skipped), unlit.
+  void outline(const Points& x, const std::vector<Triangle>& triangles,
+               const std::vector<int>& which, const Rgb& color,
+               const Eigen::Matrix4f& view_projection, float width = 1.0f);
   // Unlit points of `size` pixels.
   void points(const std::vector<Vec3>& points, const Rgb& color, float size,
               const Eigen::Matrix4f& view_projection);
   // Unlit filled triangles given in pixels of a width x height viewport (origin top-left).
   void pixel_triangles(const std::vector<Vec3>& corners, const std::vector<Rgb>& colors, int width,
                        int height);
-  // The form's soft shadow on the plane z = ground_z below it, lit from straight above, its
-  // penumbra `blur` wide (world units). Drawn before the form, without depth.
+  // The form's soft shadow on the plane z = ground_z below it, lit from straight above, with a
+  // penumbra of radius `blur` (world units). Drawn before the form, with the depth test off;
+  // the framebuffer, viewport, clear colour and scissor are as they were after it, the bound
+  // program, vertex array and texture of unit 0 are its own.
   void shadow(const Points& x, const std::vector<Triangle>& triangles, double ground_z, double blur,
               const Eigen::Matrix4f& view_projection);
   // A line of antialiased text (font.hpp), its box's top-left corner at pixel (x, y) of a width

@@ -50,10 +50,11 @@ class Renderer {
   // Shaded mesh (positions in any unit, per-vertex colours) on a white background with its soft
   // shadow, orthographic from the camera and framed tightly, with the legend on the right when
   // given and a heading (caption, then the legend's title) at the top. Antialiased by
-  // supersampling; every label stays inside the image.
+  // supersampling; every label stays inside the image. The triangles `outlined` (indices into
+  // `triangles`: where the form passes through itself) are outlined in magenta over everything.
   Image render(const Points& x, const std::vector<Triangle>& triangles,
                const std::vector<Rgb>& colors, const Camera& camera, const Legend* legend,
-               const std::string& caption = {});
+               const std::string& caption = {}, const std::vector<int>& outlined = {});
 
  private:
   struct Impl;
