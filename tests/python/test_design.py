@@ -36,7 +36,8 @@ def test_design_matches_the_cli(root, cli, cli_env, tmp_path):
 def test_an_adjoint_design_keeps_its_calibration_for_the_next(root, tmp_path, monkeypatch):
     monkeypatch.setenv("MEMBRA_CACHE_DIR", str(tmp_path / "cache"))
     spec = tiny_design(root)
-    spec["design"].update({"method": "adjoint", "density_cell": 25, "evaluations": 4})
+    spec["design"].update({"method": "adjoint", "density_cell": 25, "evaluations": 4,
+                           "stencil_trials": 1, "piece_evaluations": 0})  # the cache, not the design
     spec["resin"]["layout"] = "squares"  # the adjoint lays out squares, not the example's darts
     del spec["resin"]["darts"]
     first = membra.design(spec)
