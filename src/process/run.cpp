@@ -2,13 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <variant>
 
-#include "membra/core/units.hpp"
 #include "membra/geometry/mesh_prolongation.hpp"
 #include "membra/process/explore.hpp"
 #include "membra/process/grid_resolution.hpp"

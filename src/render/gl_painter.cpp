@@ -512,7 +512,7 @@ void GlPainter::heading(const std::string& title, int width, int height) {
   // (A title that fits once shrunk is drawn whole: it was cut before when the ellipsis alone
   // would not have fitted beside it.)
   std::string shown = title;
-  if (font.width(title, px) > room) do {
+  if (!title.empty() && font.width(title, px) > room) do {
       shown.pop_back();
       while (!shown.empty() && (static_cast<unsigned char>(shown.back()) & 0xC0) == 0x80)
         shown.pop_back();  // a whole UTF-8 sequence at a time

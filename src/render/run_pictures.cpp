@@ -43,7 +43,7 @@ void paint_curvature_map(const RunResult& r, const RunStaging& s, const Camera& 
   const Legend legend{"Gaussian curvature", "1/m^2", s.target.lo, s.target.hi, s.options.colormap};
   blit(side,
        panel.render(r.prepared.membrane.state.x, mesh.triangles, s.measured.rgb, camera, &legend,
-                    "Form"),
+                    "Form", r.self_intersection.triangles),
        2 * pw, 0);
   add_png(out, "curvature_map.png", side);
 }

@@ -37,7 +37,8 @@ class GlPainter {
   // space and `rotation` (rows right, up, back) turns normals towards the viewer.
   void mesh(const Points& x, const std::vector<Triangle>& triangles, const std::vector<Rgb>& colors,
             const Eigen::Matrix4f& view_projection, const Eigen::Matrix3f& rotation);
-  // Unlit line segments: endpoints in pairs, `width` image pixels wide.
+  // Unlit line segments: endpoints in pairs, `width` image pixels wide (wider than 1 only in a
+  // context that is not forward-compatible, as the renderer's; the viewer's lines stay 1 pixel).
   void lines(const std::vector<Vec3>& endpoints, const Rgb& color,
              const Eigen::Matrix4f& view_projection, float width = 1.0f);
   // The edges of the triangles `which` (indices into `triangles`; others are skipped), unlit.
