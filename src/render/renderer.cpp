@@ -213,16 +213,8 @@ Image Renderer::render(const Points& x, const std::vector<Triangle>& tris,
 }
 
 Image read_pixels(int width, int height) {
-  Image img{width, height, std::vector<std::uint8_t>(static_cast<size_t>(width) * height * 3)};
-  std::vector<std::uint8_t> rgba(static_cast<size_t>(width) * height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  for (int yy = 0; yy < height; ++yy)  // OpenGL rows start at the bottom
-    for (int xx = 0; xx < width; ++xx)
-      for (int c = 0; c < 3; ++c)
-        img.rgb[(static_cast<size_t>(yy) * width + xx) * 3 + c] =
-            rgba[(static_cast<size_t>(height - 1 - yy) * width + xx) * 4 + c];
-  return img;
+  std::vector<std::uint8_t> rgba;
+  return read_image(width, height, 1, rgba);  // one framebuffer pixel to each of the image's
 }
 
 Image draw_pattern(const Pattern* pattern, const Box2& frame, double pixels_per_mm,
