@@ -8,7 +8,7 @@
 #include "membra/core/input_error.hpp"
 #include "membra/model/benchmark_problem.hpp"
 #include "membra/model/continuum_sheet.hpp"
-#include "membra/model/pattern_boundary.hpp"
+#include "membra/model/mesh_outlines.hpp"
 #include "membra/model/pins.hpp"
 #include "membra/model/segment_distance.hpp"
 #include "membra/process/cut_after_motion.hpp"
@@ -162,7 +162,7 @@ ContinuumSpec continuum_spec(const Scene& scene) {
     const bool hole = cut && cut->hole && continuum;
     if (!imp && !hole) continue;
     const Box2 frame{Vec2::Zero(), stretch.cwiseProduct(Vec2(spec.width, spec.height))};
-    for (Polygon2 poly : pattern_boundaries(imp ? *imp->pattern : *cut->hole, frame, o)) {
+    for (Polygon2 poly : mesh_outlines(imp ? *imp->pattern : *cut->hole, frame, o)) {
       for (Vec2& p : poly) p = p.cwiseQuotient(stretch);
       if (hole) check_hole_inside(spec, poly, step.pointer + "/hole");
       spec.features.push_back(std::move(poly));

@@ -31,12 +31,12 @@ TEST(GridResolution, Exp3At21WarnsAndNamesAResolutionThatResolvesIt) {
       coarse_grid(load_scene(kGridExamples + "exp3_parallel.json", {"sheet.resolution=[35,35]"})));
 }
 
-// A strip coated all over, 10 mm wide on a 5 mm grid: the narrowest feature is the sheet itself,
-// a hair under two spacings as the outline is sampled; the message must not call it 2 spacings
-// while it asks for 2.
+// A strip coated all over, 10 mm wide on a grid of 5.02 mm (the larger of its two spacings): the
+// narrowest feature is the sheet itself, a hair under two spacings; the message must not call
+// it 2 spacings while it asks for 2.
 TEST(GridResolution, AFeatureJustUnderTwoSpacingsDoesNotReadAsTwo) {
   const auto coarse = coarse_grid(parse_scene(nlohmann::json::parse(R"({
-    "name": "strip", "sheet": {"size": [110, 10], "resolution": [23, 3]},
+    "name": "strip", "sheet": {"size": [110.4, 10], "resolution": [23, 3]},
     "protocol": [{"step": "stretch", "lambda": [1.5, 1.0]},
       {"step": "impregnate", "bilayer": true, "pattern": {"polygon": {"points":
         [[-10, -10], [310, -10], [310, 210], [-10, 210]]}}}]})")));
