@@ -115,13 +115,13 @@ class Raster final : public Pattern {
     if (!(size.x() > 0.0) || !(size.y() > 0.0))
       throw std::invalid_argument("image: size must be > 0");
   }
+  // Resin where the bilinear grey level is on the resin side of the threshold: the same level
+  // the continuum's mesh follows (field), so no triangle of it lies across the outline; on a
+  // black-and-white image that is the pixels' own edges, their corners cut.
   bool contains(const Vec2& p) const override {
     const Vec2 t = (p - origin_).cwiseQuotient(size_);
     if (t.x() < 0.0 || t.y() < 0.0 || t.x() >= 1.0 || t.y() >= 1.0) return false;
-    const int col = std::min(w_ - 1, static_cast<int>(t.x() * w_));
-    const int row = std::min(h_ - 1, static_cast<int>((1.0 - t.y()) * h_));  // row 0 at the top
-    const bool dark = g_[static_cast<size_t>(row) * w_ + col] < threshold_;
-    return dark != invert_;
+    return field(p) < 0.0;
   }
   Box2 bounds() const override { return {origin_, origin_ + size_}; }
   double field(const Vec2& p) const override {

@@ -5,13 +5,21 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <numbers>
 #include <string>
 #include <vector>
 
+#include <stb_image_write.h>
+#include <unistd.h>
+
 #include "membra/core/input_error.hpp"
 #include "membra/io/scene.hpp"
+#include "membra/model/triangle_resin.hpp"
 #include "membra/output/report.hpp"
+#include "membra/process/path.hpp"
 #include "membra/process/run.hpp"
 
 namespace membra {
@@ -244,6 +252,67 @@ TEST(ContinuumSteps, OnATableTheGrownSheetSettlesUnderItsWeight) {
   EXPECT_NEAR(j["table"]["weight_N"].get<double>(), r.table.weight, 1e-12);
   EXPECT_FALSE(j["pose"]["posed"].get<bool>());
   EXPECT_GT(j["energy_parts"]["table"].get<double>(), 0.0);
+}
+
+// A grey PNG mask on the continuum (docs/model.md, "Meshes that follow the pattern"): a dark disk
+// 40 px across with a one-pixel ramp at its rim, off the image's centre, 2.5 mm a pixel on the
+// 300 x 200 mm frame. The mesh follows the mask's 0.5 grey level: every vertex between resin and
+// latex lies on the disk pulled back by the stretch (an ellipse of semi-axes 33.3 and 50 mm on
+// the natural sheet) within 0.15 mm (0.06 px: the ramp read bilinearly, in 8 bits), the resin's
+// natural area is the ellipse's within 0.5 % and its centroid where the image puts it (row 0 at
+// the top) within 0.1 mm.
+TEST(ContinuumSteps, AGreyImageMaskIsMeshedAlongItsOutline) {
+  const int w = 120, h = 80;
+  const double radius = 20.0, cx = 40.0, cy = 30.0;  // px, from the image's top-left corner
+  std::vector<unsigned char> grey(static_cast<size_t>(w) * h);
+  for (int row = 0; row < h; ++row)
+    for (int col = 0; col < w; ++col) {
+      const double d = std::hypot(col + 0.5 - cx, row + 0.5 - cy) - radius;
+      grey[static_cast<size_t>(row) * w + col] =
+          static_cast<unsigned char>(std::lround(255.0 * std::clamp(0.5 + 0.5 * d, 0.0, 1.0)));
+    }
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("membra_mask_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  ASSERT_TRUE(stbi_write_png((dir / "disk.png").c_str(), w, h, 1, grey.data(), w));
+  const Scene scene = parse_scene(nlohmann::json::parse(R"({"name": "mask", "model": "continuum",
+    "sheet": {"size": [200, 200], "material": "latex", "mesh": {"max_edge": 10}},
+    "simulation": {"G": 0},
+    "protocol": [{"step": "stretch", "lambda": [1.5, 1.0]},
+      {"step": "impregnate", "material": "epoxy",
+       "pattern": {"image": {"file": "disk.png", "origin": [0, 0], "size": [300, 200]}}}]})"),
+                                  dir);
+  SceneRun run(scene);
+  for (const ProtocolStep& step : scene.protocol) ASSERT_TRUE(run.apply(step));
+  std::filesystem::remove_all(dir);
+  const Sheet& sheet = run.partial().prepared.membrane.sheet;
+  const std::vector<bool> resin = triangle_resin(sheet);
+  const Points& x = sheet.model.reference;
+  const double a = 0.050 / 1.5, b = 0.050;                         // m, natural sheet
+  const Vec3 centre(2.5e-3 * cx / 1.5, 0.200 - 2.5e-3 * cy, 0.0);  // row 0 at the top
+  double area = 0.0;
+  Vec3 moment = Vec3::Zero();
+  std::vector<int> side(static_cast<size_t>(x.cols()), 0);  // bit 1: resin, bit 2: latex
+  for (size_t t = 0; t < sheet.triangles.size(); ++t) {
+    const Triangle& tri = sheet.triangles[t];
+    const double at =
+        0.5 * (x.col(tri[1]) - x.col(tri[0])).cross(x.col(tri[2]) - x.col(tri[0])).norm();
+    for (const int v : tri) side[static_cast<size_t>(v)] |= resin[t] ? 1 : 2;
+    if (!resin[t]) continue;
+    area += at;
+    moment += at * (x.col(tri[0]) + x.col(tri[1]) + x.col(tri[2])) / 3.0;
+  }
+  EXPECT_NEAR(area / (std::numbers::pi * a * b), 1.0, 5e-3);
+  EXPECT_LT((moment / area - centre).norm(), 1e-4);
+  int on_outline = 0;
+  for (int v = 0; v < x.cols(); ++v) {
+    if (side[static_cast<size_t>(v)] != 3) continue;
+    const Vec3 d = x.col(v) - centre;
+    const double level = std::hypot(d.x() / a, d.y() / b);  // 1 on the ellipse
+    EXPECT_NEAR((level - 1.0) * a, 0.0, 1.5e-4) << "vertex " << v;
+    ++on_outline;
+  }
+  EXPECT_GT(on_outline, 100);  // the ellipse's 260 mm of outline on a mesh that follows it
 }
 
 }  // namespace
