@@ -7,6 +7,7 @@
 
 #include "membra/io/scene.hpp"
 #include "membra/process/run.hpp"
+#include "process/crossing_warning.hpp"
 
 namespace membra {
 namespace run_warnings_test {
@@ -14,11 +15,7 @@ namespace {
 
 const std::string kExamples = std::string(MEMBRA_SOURCE_DIR) + "/examples/";
 
-bool says_it_passes_through_itself(const std::vector<std::string>& warnings) {
-  for (const std::string& w : warnings)
-    if (w.find("passes through itself") != std::string::npos) return true;
-  return false;
-}
+using test_support::says_it_passes_through_itself;
 
 // The message names the count and the place, in mm; a form that does not cross says nothing.
 TEST(RunWarnings, TheMessageNamesHowManyAndWhere) {
@@ -35,6 +32,20 @@ TEST(RunWarnings, TheMessageNamesHowManyAndWhere) {
   EXPECT_NE(m.find("no self-contact"), std::string::npos) << m;
   r.self_intersection = {};
   EXPECT_FALSE(says_it_passes_through_itself(run_warnings(scene, r)));
+}
+
+// An impregnate step whose pattern the mesh does not follow is named with its count of triangles
+// across the outline; none across says nothing.
+TEST(RunWarnings, TrianglesAcrossAPatternsOutlineAreNamedByStep) {
+  const Scene scene = load_scene(kExamples + "exp1_basic.json");
+  RunResult r;
+  r.steps.resize(3);
+  r.steps[1].name = "impregnate";
+  EXPECT_TRUE(run_warnings(scene, r).empty());
+  r.steps[1].partly_covered = 7;
+  const std::vector<std::string> w = run_warnings(scene, r);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("/protocol/1: 7 triangles of the mesh lie across", 0), 0u) << w[0];
 }
 
 // With simulation.explore, another form that crosses itself is named by its branch; the form

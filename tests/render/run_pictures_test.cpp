@@ -14,6 +14,7 @@
 #include "membra/output/output_set.hpp"
 #include "membra/process/run.hpp"
 #include "membra/render/run_outputs.hpp"
+#include "process/crossing_warning.hpp"
 
 namespace membra {
 namespace run_pictures_test {
@@ -37,11 +38,7 @@ std::vector<int> magenta_pixels(const OutputSet& out, const std::string& name, i
   return n;
 }
 
-bool says_it_passes_through_itself(const std::vector<std::string>& warnings) {
-  for (const std::string& w : warnings)
-    if (w.find("passes through itself") != std::string::npos) return true;
-  return false;
-}
+using test_support::says_it_passes_through_itself;
 
 // exp3 on the lattice at 21 x 21 rolls its strips past a full turn, and the turns cross (31
 // pairs of triangles when measured): the run says so, and its curvature, stress and each of the
