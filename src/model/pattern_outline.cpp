@@ -88,8 +88,16 @@ void segments(const Samples& g, std::unordered_map<long, long>& next,
     }
 }
 
-// Drops vertices on straight runs (a straight edge is traced as one point per cell).
-Polygon2 simplify(const Polygon2& loop, double step) {
+// Drops vertices on straight runs (a straight edge is traced as one point per cell). Where the
+// field is zero at a sample, the crossings of the edges that meet there coincide: they are one
+// vertex first, or their zero-length edge would read as straight and drop a corner (a strip's
+// side meeting the frame's edge came out slanted by a cell over its length).
+Polygon2 simplify(const Polygon2& traced, double step) {
+  const double same = 1e-9 * step;
+  Polygon2 loop;
+  for (const Vec2& p : traced)
+    if (loop.empty() || (p - loop.back()).norm() > same) loop.push_back(p);
+  while (loop.size() > 1 && (loop.back() - loop.front()).norm() <= same) loop.pop_back();
   Polygon2 simple;
   for (size_t k = 0; k < loop.size(); ++k) {
     const Vec2& prev = loop[(k + loop.size() - 1) % loop.size()];

@@ -94,8 +94,10 @@ void report_steps(const RunResult& r, json& j) {
                          {"residual_relative", step.solve.residual_relative},
                          {"converged", step.solve.converged},
                          {"wall_seconds", step.solve.wall_seconds}};
-    if (step.name == "impregnate")
+    if (step.name == "impregnate") {
       js = {{"step", step.name}, {"resin_springs", step.resin_springs}};
+      if (r.prepared.membrane.sheet.continuum()) js["partly_covered"] = step.partly_covered;
+    }
     if (step.name == "add_springs") js["springs_added"] = step.springs_added;
     if (step.name == "cut") {
       js["springs_cut"] = step.springs_cut;

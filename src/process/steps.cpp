@@ -9,6 +9,7 @@
 #include "membra/model/curvature_map.hpp"
 #include "membra/model/cut.hpp"
 #include "membra/model/grow.hpp"
+#include "membra/model/partial_cover.hpp"
 
 namespace membra {
 namespace {
@@ -56,6 +57,13 @@ Path apply_impregnate(Membrane& m, const ImpregnateStep& step, const std::string
     throw InputError(pointer + "/pattern",
                      "the pattern covers no spring of the sheet (is it between grid nodes, or "
                      "outside the stretched sheet?)");
+  // On the continuum each triangle takes the material at its centroid: one the outline crosses
+  // would be resin or latex throughout. The mesh follows the pattern, so none should; the chords
+  // stray by the tolerance, times the stretch on the frame.
+  if (m.sheet.continuum())
+    out.report.partly_covered =
+        triangles_across(m.sheet, m.state.x, *step.pattern,
+                         2.0 * m.sheet.mesh.spec.tolerance * m.stretch.maxCoeff());
   return nothing_to_solve();
 }
 

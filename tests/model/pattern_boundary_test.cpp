@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -18,6 +19,23 @@ TEST(PatternBoundary, APolygonComesOutAsGivenCornersIncluded) {
   ASSERT_EQ(loops.size(), 1u);
   ASSERT_EQ(loops[0].size(), 4u);
   for (const Vec2& corner : square) {
+    double nearest = 1.0;
+    for (const Vec2& p : loops[0]) nearest = std::min(nearest, (p - corner).norm());
+    EXPECT_LT(nearest, 1e-9);
+  }
+}
+
+// A strip across a frame whose top edge is off the tracing grid, its side exactly on a grid line
+// (the field zero at samples): the side comes out straight, its corners at the frame's edge.
+// (Two crossings at one sample once made a zero-length edge that dropped the corner: the side
+// ran slanted by a cell, 0.25 mm over 163 mm, and exp2's strips read 7.67 mm wide for 8.)
+TEST(PatternBoundary, AStripSideOnTheGridMeetsTheFrameAtItsCorner) {
+  const Box2 frame{Vec2(0, 0), Vec2(0.3, 0.1633)};
+  const auto loops = pattern_boundaries(*make_strip({{0.030, 0.0}, {0.030, 0.200}}, 0.012), frame);
+  ASSERT_EQ(loops.size(), 1u);
+  ASSERT_EQ(loops[0].size(), 4u);
+  for (const Vec2& corner :
+       {Vec2(0.024, 0.0), Vec2(0.036, 0.0), Vec2(0.036, 0.1633), Vec2(0.024, 0.1633)}) {
     double nearest = 1.0;
     for (const Vec2& p : loops[0]) nearest = std::min(nearest, (p - corner).norm());
     EXPECT_LT(nearest, 1e-9);

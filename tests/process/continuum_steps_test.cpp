@@ -71,6 +71,11 @@ TEST(ContinuumSteps, BilayerRollRollsAsOnTheLattice) {
   EXPECT_NEAR(r.shape.height * 1e3, 51.0, 2.5);
   EXPECT_EQ(r.shape.quadric.classification, "cylindrical");
   EXPECT_NEAR(1.0 / r.shape.quadric.k1, 0.197, 0.01);
+  // The coat's step: no triangle across its outline, said in report.json.
+  const nlohmann::json steps =
+      make_report(load_scene(kExampleDir + "bilayer_roll.json"), r)["steps"];
+  ASSERT_EQ(steps[1]["step"], "impregnate");
+  EXPECT_EQ(steps[1]["partly_covered"], 0);
 }
 
 TEST(ContinuumSteps, SpringFamiliesAreRefusedByName) {
@@ -313,6 +318,8 @@ TEST(ContinuumSteps, AGreyImageMaskIsMeshedAlongItsOutline) {
     ++on_outline;
   }
   EXPECT_GT(on_outline, 100);  // the ellipse's 260 mm of outline on a mesh that follows it
+  ASSERT_EQ(run.partial().steps.size(), 2u);
+  EXPECT_EQ(run.partial().steps[1].partly_covered, 0);
 }
 
 }  // namespace

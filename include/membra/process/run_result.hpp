@@ -24,6 +24,7 @@ struct StepReport {
   std::string name;           // the step's kind ("stretch", "impregnate", ...) or "solve"
   SolveReport solve;          // the solve after the step (iterations 0 if none was needed)
   int resin_springs = 0;      // impregnate: springs that received resin
+  int partly_covered = 0;     // impregnate, continuum: triangles across the pattern's outline
   int springs_added = 0;      // add_springs
   int springs_cut = 0;        // cut: springs a cut line removed
   int particles_removed = 0;  // cut: particles a hole removed
