@@ -207,10 +207,9 @@ std::vector<std::string> run_warnings(const Scene& scene, const RunResult& r) {
                   " (final.obj's frame); no real sheet takes this form there. " +
                   contact_advice(scene) +
                   " (docs/measures.md, \"A form that passes through itself\")");
-  for (size_t k = 0; k < r.steps.size(); ++k)
-    if (r.steps[k].partly_covered > 0)
-      out.push_back("/protocol/" + std::to_string(k) + ": " +
-                    std::to_string(r.steps[k].partly_covered) +
+  for (const StepReport& step : r.steps)
+    if (step.partly_covered > 0)
+      out.push_back(step.pointer + ": " + std::to_string(step.partly_covered) +
                     " triangles of the mesh lie across the pattern's outline, each resin or latex "
                     "throughout by its centroid: the mesh does not follow the pattern there "
                     "(docs/model.md, \"Meshes that follow the pattern\")");

@@ -58,12 +58,11 @@ Path apply_impregnate(Membrane& m, const ImpregnateStep& step, const std::string
                      "the pattern covers no spring of the sheet (is it between grid nodes, or "
                      "outside the stretched sheet?)");
   // On the continuum each triangle takes the material at its centroid: one the outline crosses
-  // would be resin or latex throughout. The mesh follows the pattern, so none should; the chords
-  // stray by the tolerance, times the stretch on the frame.
+  // would be resin or latex throughout. The mesh follows the pattern, so none should: its
+  // outlines were sampled on this frame to the chord tolerance and thinned to it again.
   if (m.sheet.continuum())
     out.report.partly_covered =
-        triangles_across(m.sheet, m.state.x, *step.pattern,
-                         2.0 * m.sheet.mesh.spec.tolerance * m.stretch.maxCoeff());
+        triangles_across(m.sheet, m.state.x, *step.pattern, 2.0 * m.sheet.mesh.spec.tolerance);
   return nothing_to_solve();
 }
 
@@ -171,6 +170,7 @@ Path apply_load(PreparedScene& p, const LoadStep& step, const std::string& point
 
 Path apply_step(PreparedScene& p, const ProtocolStep& step, StepEffects& out) {
   out.report.name = step_name(step.kind());
+  out.report.pointer = step.pointer;
   Membrane& m = p.membrane;
   const std::string& at = step.pointer;
   return std::visit(

@@ -36,12 +36,6 @@ TEST(MeshOutlines, APolygonWithShortEdgesComesOutWithItsOwnVertices) {
   EXPECT_EQ(loops[0].size(), poly.size());
   for (const Vec2& corner : poly) EXPECT_EQ(nearest(loops[0], corner), 0.0);
   EXPECT_GT(signed_area(loops[0]), 0.0);  // resin on the left
-  // What the tracing gives for it: vertices near, not on, the corners.
-  const auto traced = pattern_boundaries(*make_polygon(poly), kFrame);
-  ASSERT_EQ(traced.size(), 1u);
-  int exact = 0;
-  for (const Vec2& corner : poly) exact += nearest(traced[0], corner) < 1e-12;
-  EXPECT_LT(exact, 30);
 }
 
 // A CAD outline of 10^5 vertices (2.5 um apart) keeps the few that matter, each one of its own,
@@ -76,20 +70,27 @@ TEST(MeshOutlines, AnEllipseIsSampledOnItsOutlineWithinTheChordTolerance) {
   ASSERT_EQ(loops.size(), 1u);
   const Polygon2& loop = loops[0];
   const double cs = std::cos(angle), sn = std::sin(angle);
-  const auto level = [&](const Vec2& p) {  // (u/a)^2 + (v/b)^2 - 1 in the ellipse's frame
+  // (u/a)^2 + (v/b)^2 - 1 in the ellipse's frame, and the distance it says: the level over its
+  // gradient's length (first order, exact enough at the sagittas' 20 um against radii of 31 mm
+  // and more).
+  const auto level = [&](const Vec2& p) {
     const Vec2 d = p - c;
     const double u = cs * d.x() + sn * d.y(), v = -sn * d.x() + cs * d.y();
     return u * u / (a * a) + v * v / (b * b) - 1.0;
   };
+  const auto distance = [&](const Vec2& p) {
+    const Vec2 d = p - c;
+    const double u = cs * d.x() + sn * d.y(), v = -sn * d.x() + cs * d.y();
+    return level(p) / (2.0 * std::hypot(u / (a * a), v / (b * b)));
+  };
   double worst_chord = 0.0;
   for (size_t k = 0; k < loop.size(); ++k) {
     EXPECT_NEAR(level(loop[k]), 0.0, 1e-12);
-    // The chord's midpoint lies inside by its sagitta: the level there is about -2 s / radius,
-    // so s = -level * b / 2 is an upper bound (the radius of curvature is at least b^2 / a).
+    // A chord's midpoint lies inside the ellipse by about its sagitta.
     const Vec2 mid = 0.5 * (loop[k] + loop[(k + 1) % loop.size()]);
-    worst_chord = std::max(worst_chord, -level(mid) * b / 2.0);
+    worst_chord = std::max(worst_chord, -distance(mid));
   }
-  EXPECT_LT(worst_chord, o.tolerance * a / b);
+  EXPECT_LT(worst_chord, 1.01 * o.tolerance);
   EXPECT_GT(worst_chord, 0.25 * o.tolerance);  // not sampled far finer than asked
   const double area = std::numbers::pi * a * b;
   EXPECT_NEAR(signed_area(loop), area, area * 1e-3);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -77,6 +78,43 @@ TEST(PartialCover, AMeshThatFollowsTheOutlineHasNoneAcross) {
   const PatternPtr moved =
       make_polygon({{-0.01, 0.0202}, {0.11, 0.0202}, {0.11, 0.0602}, {-0.01, 0.0602}});
   EXPECT_EQ(triangles_across(m.sheet, m.x, *moved, 4e-5), 200);
+}
+
+// A black-and-white image of a disk in pixels of 0.05 mm (its field, the grey level times the
+// pixel, stays within 0.025 mm of zero: read as it is, no point would be clearly on either side).
+// Its outline, the pixels' staircase, lies within a pixel of the circle: a triangle with corners
+// farther than that on both sides is across it, one whose points all lie farther from the circle
+// than a pixel and the margin on one side is not.
+TEST(PartialCover, AFineImageMasksOutlineIsReadAsADistance) {
+  const Mesh m = square_mesh(true);
+  const int w = 2000;
+  const double pixel = 0.1 / w, r = 0.030;
+  const Vec2 centre(0.05, 0.05);
+  std::vector<float> grey(static_cast<size_t>(w) * w);
+  for (int row = 0; row < w; ++row)
+    for (int col = 0; col < w; ++col) {
+      const Vec2 p((col + 0.5) * pixel, 0.1 - (row + 0.5) * pixel);  // row 0 at the top
+      grey[static_cast<size_t>(row) * w + col] = (p - centre).norm() < r ? 0.0f : 1.0f;
+    }
+  const PatternPtr disk = make_raster(grey, w, w, Vec2::Zero(), Vec2(0.1, 0.1), 0.5, false);
+  const double margin = 4e-5, slack = 2.0 * pixel + margin;
+  int surely = 0, maybe = 0;
+  for (const Triangle& t : m.sheet.triangles) {
+    double lo = 1.0, hi = -1.0;
+    for (const int v : t) {
+      const double d = (m.x.col(v).head<2>() - centre).norm() - r;
+      lo = std::min(lo, d), hi = std::max(hi, d);
+    }
+    surely += lo < -slack && hi > slack;
+    // The circle's distance changes by at most an edge along the triangle.
+    const double edge =
+        (m.x.col(t[0]) - m.x.col(t[1])).norm() + (m.x.col(t[1]) - m.x.col(t[2])).norm();
+    maybe += lo < slack + edge && hi > -slack - edge;
+  }
+  const int across = triangles_across(m.sheet, m.x, *disk, margin);
+  EXPECT_GT(surely, 100);  // a circle of 188 mm across 2 mm cells
+  EXPECT_GE(across, surely);
+  EXPECT_LE(across, maybe);
 }
 
 }  // namespace

@@ -41,6 +41,7 @@ TEST(RunWarnings, TrianglesAcrossAPatternsOutlineAreNamedByStep) {
   RunResult r;
   r.steps.resize(3);
   r.steps[1].name = "impregnate";
+  r.steps[1].pointer = "/protocol/1";
   EXPECT_TRUE(run_warnings(scene, r).empty());
   r.steps[1].partly_covered = 7;
   const std::vector<std::string> w = run_warnings(scene, r);

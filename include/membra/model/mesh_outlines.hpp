@@ -2,8 +2,8 @@
 // The polygons a continuum mesh follows (docs/model.md, "Meshes that follow the pattern"): the
 // pattern's exact outline as the stencil draws it (polygons with their own vertices, ellipses as
 // arcs, unions and differences as the pieces of their parts' outlines that bound the whole), the
-// arcs sampled to the chord tolerance, and vertices closer to the chord between their
-// neighbours than the tolerance dropped (Douglas-Peucker). Primitives with no exact form (strips,
+// arcs sampled to the chord tolerance, and vertices within the tolerance of the chords between
+// those kept dropped (Douglas-Peucker). Primitives with no exact form (strips,
 // rings, hyperbola bands, images) are traced as pattern_boundaries does.
 #include <vector>
 

@@ -9,10 +9,11 @@
 namespace membra {
 
 // How many of the sheet's triangles, at positions `x` (frame coordinates, m), have points
-// clearly inside the pattern and points clearly outside it: more than `margin` (m, the chord
-// tolerance the mesh follows outlines to) from the outline by the pattern's field, among their
+// clearly inside the pattern and points clearly outside it: farther than `margin` (m, the
+// chord tolerance the mesh follows outlines to, twice) from the outline by the pattern's field,
+// read as a distance (a field that is not one divided by its gradient's length), among their
 // corners, edge points and interior points at sixths of the way (28 points). A straight outline
-// is caught exactly: its field is linear, its extremes over a triangle are at the corners.
+// is caught exactly: its distance is linear, its extremes over a triangle are at the corners.
 int triangles_across(const Sheet& sheet, const Points& x, const Pattern& pattern, double margin);
 
 }  // namespace membra

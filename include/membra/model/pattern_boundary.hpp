@@ -1,5 +1,6 @@
 #pragma once
-// The outlines of a pattern as the polygons a mesh follows (docs/model.md, "Meshes that follow
+// The outlines of a pattern traced, for the patterns with no exact form (strips, rings, hyperbola
+// bands, images: mesh_outlines.hpp takes the others as drawn; docs/model.md, "Meshes that follow
 // the pattern"): traced on a fine grid, each vertex moved onto the pattern's outline, straight
 // runs merged to a chord tolerance, and the corners the tracing cut off restored where the two
 // edges meet. Straight edges and polygon corners come out as given; curves as chords within the

@@ -3,7 +3,7 @@
 // polygons as given, ellipses as elliptical arcs, and unions and differences as the pieces of
 // their parts' outlines that bound the whole. Primitives with no exact form (strips, rings,
 // hyperbola bands, images) are traced as pattern_boundaries does, to the stencil's chord
-// tolerance of 5 um (a laser's kerf is some 100 um).
+// tolerance of 5 um (a laser's kerf is some 100 um) or to the one the caller gives (the mesh's).
 #include <vector>
 
 #include "membra/geometry/plane_curve.hpp"

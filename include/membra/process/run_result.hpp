@@ -28,6 +28,7 @@ struct StepReport {
   int springs_added = 0;      // add_springs
   int springs_cut = 0;        // cut: springs a cut line removed
   int particles_removed = 0;  // cut: particles a hole removed
+  std::string pointer = {};   // the step's place in the scene ("/protocol/k"), for messages
 };
 
 // One recorded instant of a run, for animations and contact sheets.
