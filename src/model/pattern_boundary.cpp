@@ -3,15 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "membra/model/segment_distance.hpp"
+
 namespace membra {
 namespace {
-
-double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 e = b - a;
-  const double l2 = e.squaredNorm();
-  const double t = l2 > 0.0 ? std::clamp((p - a).dot(e) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * e)).norm();
-}
 
 // Marks the vertices of the open chain [first, last] that Douglas-Peucker keeps.
 void keep_chain(const Polygon2& poly, size_t first, size_t last, double tolerance,
@@ -24,7 +19,7 @@ void keep_chain(const Polygon2& poly, size_t first, size_t last, double toleranc
     double worst = 0.0;
     size_t at = a;
     for (size_t k = (a + 1) % n; k != b; k = (k + 1) % n) {
-      const double d = segment_distance(poly[k], poly[a], poly[b]);
+      const double d = std::sqrt(segment_distance2(poly[k], poly[a], poly[b]));
       if (d > worst) worst = d, at = k;
     }
     if (worst <= tolerance) continue;
